@@ -1,0 +1,71 @@
+// Flank-milling cutters: a cylindrical flat end mill, or a tapered (conical)
+// end mill, described in the tool frame by the tip (centre of the end face)
+// and the unit axis pointing from the tip into the spindle.
+#ifndef TPOPT_MODEL_CUTTER_H_
+#define TPOPT_MODEL_CUTTER_H_
+
+#include <cmath>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "model/status.h"
+
+namespace tpopt {
+
+struct Cutter {
+  // Radius at the tip (end face), mm. > 0.
+  double radius_mm = 4.0;
+  // Length of the cutting flank measured from the tip along the axis, mm.
+  // > 0. Points beyond it are not cut.
+  double flute_length_mm = 50.0;
+  // Half cone angle of a tapered flank, radians, in [0, pi/4); the radius
+  // grows as radius_mm + t tan(taper) at height t. 0 is a cylinder.
+  double taper_rad = 0.0;
+
+  // Checks the ranges above; `why` names the offending field and value.
+  bool IsValid(std::string* why) const;
+  Status Validate(const std::string& what) const;
+
+  double RadiusAt(double height_mm) const {
+    return radius_mm + height_mm * std::tan(taper_rad);
+  }
+};
+
+// Signed distance (mm) from point q to the solid cutter placed at `tip` with
+// unit `axis`, all in one frame: negative inside the cutter (the tool would
+// remove q), positive outside. Exact for the cylinder; for a taper, the
+// flank part is the exact distance to the cone line in the axial plane and
+// the caps are exact, which is what flank deviation needs. Templated on the
+// scalar so that Ceres residuals can differentiate through it.
+template <typename T>
+T SignedDistanceToCutter(const Cutter& cutter,
+                         const Eigen::Matrix<T, 3, 1>& q,
+                         const Eigen::Matrix<T, 3, 1>& tip,
+                         const Eigen::Matrix<T, 3, 1>& axis) {
+  using std::abs;
+  using std::max;
+  using std::min;
+  using std::sqrt;
+  const Eigen::Matrix<T, 3, 1> d = q - tip;
+  const T t = d.dot(axis);                            // height above the tip
+  const T r2 = (d - t * axis).squaredNorm();
+  // sqrt is not differentiable at 0; a point on the axis is deep inside.
+  const T r = r2 > T(1e-24) ? T(sqrt(r2)) : T(0.0);
+  const double tan_taper = std::tan(cutter.taper_rad);
+  const double cos_taper = std::cos(cutter.taper_rad);
+  const T half_length = T(0.5 * cutter.flute_length_mm);
+  // Radial distance to the flank measured normal to it, and axial distance
+  // to the nearer cap.
+  const T radial = (r - (T(cutter.radius_mm) + t * tan_taper)) * cos_taper;
+  const T axial = abs(t - half_length) - half_length;
+  if (radial <= T(0.0) || axial <= T(0.0)) {
+    if (radial <= T(0.0) && axial <= T(0.0)) return max(radial, axial);
+    return radial > T(0.0) ? radial : axial;
+  }
+  return T(sqrt(radial * radial + axial * axial));
+}
+
+}  // namespace tpopt
+
+#endif  // TPOPT_MODEL_CUTTER_H_

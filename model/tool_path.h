@@ -1,0 +1,38 @@
+// Cutter-location (CL) poses and paths in the workpiece frame W.
+#ifndef TPOPT_MODEL_TOOL_PATH_H_
+#define TPOPT_MODEL_TOOL_PATH_H_
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "model/cutter.h"
+
+namespace tpopt {
+
+struct ToolPose {
+  // Tool tip (centre of the cutter's end face) in W, mm.
+  Eigen::Vector3d p_w_tip = Eigen::Vector3d::Zero();
+  // Unit tool axis in W, from the tip into the spindle.
+  Eigen::Vector3d a_w = Eigen::Vector3d::UnitZ();
+  // Programmed feed, mm/min; 0 when the source gave none.
+  double feed_mm_per_min = 0.0;
+  // True for a rapid (positioning) move to this pose.
+  bool rapid = false;
+  // 1-based line of the source file the pose came from, 0 if generated.
+  int source_line = 0;
+};
+
+struct ToolPath {
+  std::vector<ToolPose> poses;
+  // The cutter named by the source (TLDATA/CUTTER), if any.
+  std::optional<Cutter> cutter;
+  // Free text carried through to outputs (e.g. the generator's settings).
+  std::string title;
+};
+
+}  // namespace tpopt
+
+#endif  // TPOPT_MODEL_TOOL_PATH_H_
