@@ -8,6 +8,7 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "model/status.h"
 

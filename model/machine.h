@@ -18,6 +18,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "model/status.h"
 #include "model/tool_path.h"
@@ -117,17 +118,23 @@ class Machine {
   void ToWorkpiece(const JointVector& joints, Eigen::Vector3d* p_w_tip,
                    Eigen::Vector3d* a_w) const;
 
-  // Joint vectors for a whole path. Picks one (A, C) branch for the whole
-  // path: of the branches whose A stays inside the A travel, the one with
-  // least total rotary motion (sum of |dA| + |dC|). C is unwrapped
-  // continuously and then shifted by whole turns into the C travel if it
-  // has one.
+  // Joint vectors for a whole path, with least total rotary motion
+  // (sum of |dA| + |dC|) inside the A travel. Away from the pole the two
+  // (A, C) branches are half a turn of C apart, and changing branch there is
+  // never allowed, so the path keeps one branch; where the path passes over
+  // or near the pole the branches meet, and the continuous motion there is a
+  // sign change of A, which is taken (found by dynamic programming over the
+  // two branches). C is unwrapped continuously and then shifted by whole
+  // turns into the C travel if it has one.
   //
-  // Singularity rule: where sin A < kSingularSinA (the axis within ~0.06 deg
-  // of +Z... see machine.cc) C is undefined, so the pose keeps the C of the
-  // nearest non-singular pose before it (or after it, at the start of the
-  // path). This keeps C still through a pass over the pole instead of letting
-  // it spin by noise / sin A.
+  // Singularity rule: where sin A < kSingularSinA (the axis within 2e-4 deg
+  // of +Z) C is undefined, so the pose keeps the C of the nearest
+  // non-singular pose before it (or after it, at the start of the path).
+  // This keeps C still through a pass over the pole instead of letting it
+  // spin by noise / sin A. Near (not at) the pole C does swing by roughly
+  // d(theta) / sin A; that is real machine motion and AxisMetrics reports it,
+  // and `warning` (if given) names the pose with the smallest |sin A| when
+  // it lies within 1 deg of the pole.
   //
   // Fails (naming the pose index, its source line and the A value) when no
   // branch keeps A inside the travel, or when a pose's axis is not unit.

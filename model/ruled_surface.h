@@ -9,6 +9,7 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "model/bspline_curve.h"
 

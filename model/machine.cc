@@ -1,0 +1,235 @@
+#include "model/machine.h"
+
+#include <algorithm>
+#include <limits>
+#include <sstream>
+
+#include <glog/logging.h>
+
+namespace tpopt {
+namespace {
+
+constexpr double kPi = M_PI;
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+// Wraps an angle to (-pi, pi].
+double WrapPi(double angle_rad) {
+  double w = std::remainder(angle_rad, 2.0 * kPi);
+  if (w <= -kPi) w += 2.0 * kPi;
+  return w;
+}
+
+// One candidate assignment of (A, C) for every pose of a path.
+struct BranchAngles {
+  std::vector<double> a_rad, c_rad;
+  double motion_rad = 0.0;
+};
+
+// Per-pose (A, C) on the two branches; C is NaN where it is undefined.
+struct PoseAngles {
+  double a_rad[2];
+  double c_rad[2];
+};
+
+std::vector<PoseAngles> CandidateAngles(const ToolPath& path) {
+  std::vector<PoseAngles> out(path.poses.size());
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    const Eigen::Vector3d& a = path.poses[i].a_w;
+    const bool singular = std::hypot(a.x(), a.y()) < Machine::kSingularSinA;
+    const auto angles = AxisToAngles(a);
+    for (int b = 0; b < 2; ++b) {
+      out[i].a_rad[b] = angles[b].x();
+      out[i].c_rad[b] = singular ? std::nan("") : angles[b].y();
+    }
+  }
+  return out;
+}
+
+// Least-motion (A, C) for the whole path by dynamic programming over the two
+// branches. Away from the pole, changing branch between neighbours would flip
+// C by half a turn, which is forbidden, so the whole path stays on one
+// branch; at a pass over (or near) the pole the two branches meet, and
+// following the motion continuously means the sign of A changes, which the
+// programme allows when the joint step stays below a quarter turn of C.
+// Undefined C (exactly at the pole) holds the previous C. Returns false when
+// no sequence keeps A inside the travel.
+bool LeastMotionAngles(const std::vector<PoseAngles>& cand, const AxisLimits& a_lim,
+                       BranchAngles* out) {
+  const size_t n = cand.size();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<std::array<double, 2>> cost(n, {kInf, kInf}), held_c(n);
+  std::vector<std::array<int, 2>> from(n, {-1, -1});
+  auto inside = [&](size_t i, int b) {
+    return cand[i].a_rad[b] >= a_lim.min && cand[i].a_rad[b] <= a_lim.max;
+  };
+  for (size_t i = 0; i < n; ++i) {
+    for (int b = 0; b < 2; ++b) {
+      if (!inside(i, b)) continue;
+      if (i == 0) {
+        cost[0][b] = 0.0;
+        held_c[0][b] = cand[0].c_rad[b];
+        continue;
+      }
+      for (int p = 0; p < 2; ++p) {
+        if (cost[i - 1][p] == kInf) continue;
+        const double c_prev = held_c[i - 1][p];
+        double c_here = cand[i].c_rad[b];
+        double dc = 0.0;
+        if (std::isnan(c_here)) {
+          c_here = c_prev;
+        } else if (!std::isnan(c_prev)) {
+          dc = std::abs(WrapPi(c_here - c_prev));
+        }
+        if (p != b && dc > kPi / 2) continue;
+        const double step = cost[i - 1][p] + std::abs(cand[i].a_rad[b] - cand[i - 1].a_rad[p]) + dc;
+        if (step < cost[i][b]) {
+          cost[i][b] = step;
+          held_c[i][b] = c_here;
+          from[i][b] = p;
+        }
+      }
+    }
+  }
+  if (n == 0) return true;
+  int b = cost[n - 1][0] <= cost[n - 1][1] ? 0 : 1;
+  if (cost[n - 1][b] == kInf) return false;
+  out->motion_rad = cost[n - 1][b];
+  out->a_rad.assign(n, 0.0);
+  out->c_rad.assign(n, 0.0);
+  for (size_t i = n; i-- > 0;) {
+    out->a_rad[i] = cand[i].a_rad[b];
+    out->c_rad[i] = held_c[i][b];
+    if (i > 0) b = from[i][b];
+  }
+  // Leading poses at the pole take the first defined C; a path entirely at
+  // the pole uses C = 0.
+  const auto first = std::find_if(out->c_rad.begin(), out->c_rad.end(),
+                                  [](double c) { return !std::isnan(c); });
+  const double first_c = first == out->c_rad.end() ? 0.0 : *first;
+  for (double& c : out->c_rad) {
+    if (!std::isnan(c)) break;
+    c = first_c;
+  }
+  for (size_t i = 1; i < n; ++i) {
+    out->c_rad[i] = out->c_rad[i - 1] + WrapPi(out->c_rad[i] - out->c_rad[i - 1]);
+  }
+  return true;
+}
+
+// Index of the first pose outside the A travel on the given branch, or -1.
+int FirstOutsideTravel(const AxisLimits& a_limits, const std::vector<PoseAngles>& cand,
+                       int branch) {
+  for (size_t i = 0; i < cand.size(); ++i) {
+    const double a = cand[i].a_rad[branch];
+    if (a < a_limits.min || a > a_limits.max) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// Shifts C by whole turns into [min, max]; false if the span does not fit.
+bool ShiftIntoTravel(const AxisLimits& c_limits, std::vector<double>* c_rad) {
+  if (c_rad->empty()) return true;
+  const auto [lo_it, hi_it] = std::minmax_element(c_rad->begin(), c_rad->end());
+  const double lo = *lo_it, hi = *hi_it;
+  if (lo >= c_limits.min && hi <= c_limits.max) return true;
+  // Smallest shift that brings the low end above the minimum, else the
+  // largest that brings the high end below the maximum.
+  double turns = 0.0;
+  if (lo < c_limits.min) {
+    turns = std::ceil((c_limits.min - lo) / (2.0 * kPi));
+  } else {
+    turns = -std::ceil((hi - c_limits.max) / (2.0 * kPi));
+  }
+  const double shift = turns * 2.0 * kPi;
+  if (lo + shift < c_limits.min || hi + shift > c_limits.max) return false;
+  for (double& c : *c_rad) c += shift;
+  return true;
+}
+
+}  // namespace
+
+std::array<Eigen::Vector2d, 2> AxisToAngles(const Eigen::Vector3d& a_w) {
+  const double sin_a = std::hypot(a_w.x(), a_w.y());
+  // atan2 keeps full precision near the pole, where acos(a_z) does not.
+  const double a = std::atan2(sin_a, a_w.z());
+  const bool singular = sin_a < Machine::kSingularSinA;
+  const double c = singular ? 0.0 : std::atan2(a_w.x(), a_w.y());
+  return {Eigen::Vector2d(a, c), Eigen::Vector2d(-a, singular ? 0.0 : WrapPi(c + kPi))};
+}
+
+JointVector Machine::ToJoints(const Eigen::Vector3d& p_w_tip, double a_rad,
+                              double c_rad) const {
+  JointVector j;
+  j.head<3>() = WorkpieceToJoints<double>(kinematics, p_w_tip, a_rad, c_rad);
+  j[kA] = a_rad;
+  j[kC] = c_rad;
+  return j;
+}
+
+void Machine::ToWorkpiece(const JointVector& joints, Eigen::Vector3d* p_w_tip,
+                          Eigen::Vector3d* a_w) const {
+  if (p_w_tip != nullptr) {
+    *p_w_tip = JointsToWorkpiece<double>(kinematics, joints[kX], joints[kY],
+                                         joints[kZ], joints[kA], joints[kC]);
+  }
+  if (a_w != nullptr) *a_w = AnglesToAxis<double>(joints[kA], joints[kC]);
+}
+
+Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joints,
+                             std::string* warning) const {
+  CHECK(joints != nullptr);
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    const double norm = path.poses[i].a_w.norm();
+    if (!(std::abs(norm - 1.0) < 1e-6)) {
+      std::ostringstream err;
+      err << "pose " << i << " (line " << path.poses[i].source_line
+          << "): tool axis length " << norm << " is not 1";
+      return Status::Error(err.str());
+    }
+  }
+  const std::vector<PoseAngles> cand = CandidateAngles(path);
+  BranchAngles chosen;
+  const bool fits_a = LeastMotionAngles(cand, limits[kA], &chosen);
+  if (!fits_a || !ShiftIntoTravel(limits[kC], &chosen.c_rad)) {
+    std::ostringstream err;
+    const int i0 = FirstOutsideTravel(limits[kA], cand, 0);
+    const int i1 = FirstOutsideTravel(limits[kA], cand, 1);
+    if (fits_a) {
+      err << "the C rotation of the path (unwrapped) does not fit the C travel ["
+          << limits[kC].min * kRadToDeg << ", " << limits[kC].max * kRadToDeg << "] deg";
+    } else {
+      // Name the pose where the branch that gets furthest leaves the travel.
+      const int b = (i0 < 0 || (i1 >= 0 && i1 > i0)) ? 1 : 0;
+      const int i = std::max(b == 0 ? i0 : i1, 0);
+      err << "pose " << i << " (line " << path.poses[i].source_line << "): A = "
+          << cand[i].a_rad[b] * kRadToDeg << " deg (or " << cand[i].a_rad[1 - b] * kRadToDeg
+          << " deg on the other branch) is outside the A travel [" << limits[kA].min * kRadToDeg
+          << ", " << limits[kA].max * kRadToDeg << "] deg";
+    }
+    return Status::Error(err.str());
+  }
+  joints->resize(path.poses.size());
+  double min_sin_a = 1.0;
+  size_t min_sin_index = 0;
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    (*joints)[i] = ToJoints(path.poses[i].p_w_tip, chosen.a_rad[i], chosen.c_rad[i]);
+    const double sin_a = std::abs(std::sin(chosen.a_rad[i]));
+    if (sin_a < min_sin_a) {
+      min_sin_a = sin_a;
+      min_sin_index = i;
+    }
+  }
+  if (warning != nullptr) {
+    warning->clear();
+    if (min_sin_a < std::sin(1.0 / kRadToDeg)) {
+      std::ostringstream w;
+      w << "pose " << min_sin_index << " (line " << path.poses[min_sin_index].source_line
+        << ") passes within " << std::asin(min_sin_a) * kRadToDeg
+        << " deg of the A = 0 singularity, where C swings by about dtheta / sin A";
+      *warning = w.str();
+    }
+  }
+  return Status::Ok();
+}
+
+}  // namespace tpopt

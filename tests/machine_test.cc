@@ -1,0 +1,180 @@
+#include "model/machine.h"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+namespace tpopt {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct AxisVector {
+  Eigen::Vector3d axis;
+  double a0_deg, c0_deg, a1_deg, c1_deg;
+};
+
+// Published vectors of the foundation issue (pivot 0, no offsets).
+TEST(AxisToAnglesTest, MatchesReferenceVectors) {
+  const AxisVector cases[] = {
+      {{0.5, 0, 0.866025}, 30, 90, -30, -90},
+      {{0, 0.5, 0.866025}, 30, 0, -30, 180},
+      {{0.3, -0.4, 0.866025}, 30, 143.1301, -30, -36.8699},
+      {{-0.2, -0.1, 0.974679}, 12.9210, -116.5651, -12.9210, 63.4349},
+  };
+  for (const auto& c : cases) {
+    const auto angles = AxisToAngles(c.axis.normalized());
+    EXPECT_NEAR(angles[0].x() / kDeg, c.a0_deg, 2e-3) << c.axis.transpose();
+    EXPECT_NEAR(angles[0].y() / kDeg, c.c0_deg, 2e-3) << c.axis.transpose();
+    EXPECT_NEAR(angles[1].x() / kDeg, c.a1_deg, 2e-3) << c.axis.transpose();
+    EXPECT_NEAR(angles[1].y() / kDeg, c.c1_deg, 2e-3) << c.axis.transpose();
+  }
+}
+
+TEST(KinematicsTest, ReferenceWorkpiecePointToJoints) {
+  Machine m;
+  const JointVector j = m.ToJoints({10, 20, 5}, 30 * kDeg, 45 * kDeg);
+  EXPECT_NEAR(j[kX], -7.071068, 1e-6);
+  EXPECT_NEAR(j[kY], 15.871173, 1e-6);
+  EXPECT_NEAR(j[kZ], 14.936729, 1e-6);
+}
+
+// The DESIGN.md joint -> workpiece formulas, written out literally, as an
+// independent reference for the factored implementation.
+Eigen::Vector3d DesignFormula(const KinematicParams& k, const JointVector& j) {
+  const double xr = k.rotary_pivot_mm.x(), yr = k.rotary_pivot_mm.y(),
+               zr = k.rotary_pivot_mm.z();
+  const double dy = k.y_offset_mm, dz = k.z_offset_mm + k.tool_length_mm;
+  const double X = j[kX], Y = j[kY], Z = j[kZ];
+  const double cA = std::cos(j[kA]), sA = std::sin(j[kA]);
+  const double cC = std::cos(j[kC]), sC = std::sin(j[kC]);
+  return {cC * (X - xr) + sC * cA * (Y - dy - yr) + sC * sA * (Z - dz - zr) + sC * dy + xr,
+          -sC * (X - xr) + cC * cA * (Y - dy - yr) + cC * sA * (Z - dz - zr) + cC * dy + yr,
+          -sA * (Y - dy - yr) + cA * (Z - dz - zr) + dz + zr};
+}
+
+TEST(KinematicsTest, RoundTripsRandomPosesIncludingNearSingular) {
+  Machine m;
+  m.kinematics.rotary_pivot_mm = {3, -7, 11};
+  m.kinematics.y_offset_mm = 20;
+  m.kinematics.z_offset_mm = 10;
+  m.kinematics.tool_length_mm = 5;
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> pos(-200, 200), ang(-M_PI, M_PI);
+  for (int i = 0; i < 2000; ++i) {
+    // Every fourth pose sits within 1e-7..1e-3 rad of A = 0.
+    const double a = (i % 4 == 0) ? std::pow(10.0, -3 - 4 * (i % 7) / 6.0) : ang(rng);
+    const double c = ang(rng);
+    const Eigen::Vector3d p_w(pos(rng), pos(rng), pos(rng));
+    const JointVector j = m.ToJoints(p_w, a, c);
+    Eigen::Vector3d p_back, a_w;
+    m.ToWorkpiece(j, &p_back, &a_w);
+    ASSERT_LT((p_back - p_w).norm(), 1e-9) << "pose " << i;
+    ASSERT_LT((DesignFormula(m.kinematics, j) - p_w).norm(), 1e-9) << "pose " << i;
+    // Axis -> angles -> axis on both branches.
+    // At the pole C is set to 0, which moves the axis by at most sin A.
+    const double tol = std::abs(std::sin(a)) < Machine::kSingularSinA ? 2 * Machine::kSingularSinA : 1e-9;
+    for (const auto& ac : AxisToAngles(a_w)) {
+      ASSERT_LT((AnglesToAxis(ac.x(), ac.y()) - a_w).norm(), tol) << "pose " << i;
+    }
+  }
+}
+
+ToolPath PathFromAxes(const std::vector<Eigen::Vector3d>& axes) {
+  ToolPath path;
+  for (size_t i = 0; i < axes.size(); ++i) {
+    ToolPose pose;
+    pose.p_w_tip = Eigen::Vector3d(i, 0, 0);
+    pose.a_w = axes[i].normalized();
+    pose.source_line = static_cast<int>(i) + 1;
+    path.poses.push_back(pose);
+  }
+  return path;
+}
+
+TEST(AssignJointsTest, UnwrapsCContinuouslyOverManyTurns) {
+  std::vector<Eigen::Vector3d> axes;
+  for (int i = 0; i <= 400; ++i) {
+    const double c = i * 10 * kDeg;  // 11 turns
+    axes.push_back(AnglesToAxis(20 * kDeg, c));
+  }
+  Machine m;
+  std::vector<JointVector> j;
+  ASSERT_TRUE(m.AssignJoints(PathFromAxes(axes), &j).ok());
+  for (size_t i = 1; i < j.size(); ++i) {
+    EXPECT_NEAR(std::abs(j[i][kC] - j[i - 1][kC]), 10 * kDeg, 1e-9);
+  }
+  EXPECT_NEAR(std::abs(j.back()[kC] - j.front()[kC]), 4000 * kDeg, 1e-6);
+}
+
+TEST(AssignJointsTest, PicksTheBranchInsideATravel) {
+  // A in [-100, 50] deg (the LinuxCNC sim): an axis at 60 deg from +Z only
+  // fits on the negative branch.
+  Machine m;
+  m.limits[kA].min = -100 * kDeg;
+  m.limits[kA].max = 50 * kDeg;
+  std::vector<Eigen::Vector3d> axes;
+  for (int i = 0; i < 10; ++i) axes.push_back(AnglesToAxis(60 * kDeg, i * 3 * kDeg));
+  std::vector<JointVector> j;
+  ASSERT_TRUE(m.AssignJoints(PathFromAxes(axes), &j).ok());
+  for (const auto& ji : j) EXPECT_NEAR(ji[kA], -60 * kDeg, 1e-9);
+  // Both tips map back exactly.
+  Eigen::Vector3d p, a;
+  m.ToWorkpiece(j[3], &p, &a);
+  EXPECT_LT((a - axes[3]).norm(), 1e-9);
+}
+
+TEST(AssignJointsTest, RejectsAOutsideTravelNamingThePose) {
+  Machine m;
+  m.limits[kA].min = -30 * kDeg;
+  m.limits[kA].max = 30 * kDeg;
+  std::vector<Eigen::Vector3d> axes(5, AnglesToAxis(10 * kDeg, 0.0));
+  axes[3] = AnglesToAxis(45 * kDeg, 0.0);
+  std::vector<JointVector> j;
+  const Status s = m.AssignJoints(PathFromAxes(axes), &j);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("pose 3"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("line 4"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("45"), std::string::npos) << s.message();
+}
+
+TEST(AssignJointsTest, HoldsCThroughTheSingularity) {
+  // A pass straight over the pole: C must not jump at the singular pose.
+  std::vector<Eigen::Vector3d> axes = {
+      AnglesToAxis(2 * kDeg, 30 * kDeg), AnglesToAxis(1 * kDeg, 30 * kDeg),
+      Eigen::Vector3d::UnitZ(), AnglesToAxis(-1 * kDeg, 30 * kDeg),
+      AnglesToAxis(-2 * kDeg, 30 * kDeg)};
+  Machine m;
+  std::vector<JointVector> j;
+  std::string warning;
+  ASSERT_TRUE(m.AssignJoints(PathFromAxes(axes), &j, &warning).ok());
+  EXPECT_NEAR(j[2][kC], j[1][kC], 1e-12);
+  EXPECT_NE(warning.find("pose 2"), std::string::npos) << warning;
+  // A straight pass over the pole is continuous motion through A = 0 with a
+  // sign change of A; C stays put rather than flipping half a turn.
+  EXPECT_NEAR(j[4][kC], j[0][kC], 1e-9);
+  EXPECT_NEAR(j[0][kA], -j[4][kA], 1e-9);
+  EXPECT_NEAR(std::abs(j[0][kA]), 2 * kDeg, 1e-9);
+}
+
+TEST(AssignJointsTest, LeadingSingularPosesTakeTheFirstDefinedC) {
+  std::vector<Eigen::Vector3d> axes = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ(),
+                                       AnglesToAxis(5 * kDeg, 70 * kDeg)};
+  Machine m;
+  std::vector<JointVector> j;
+  ASSERT_TRUE(m.AssignJoints(PathFromAxes(axes), &j).ok());
+  EXPECT_NEAR(j[0][kC], j[2][kC], 1e-12);
+}
+
+TEST(AssignJointsTest, RejectsZeroLengthAxis) {
+  ToolPath path = PathFromAxes({Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ()});
+  path.poses[1].a_w.setZero();
+  Machine m;
+  std::vector<JointVector> j;
+  const Status s = m.AssignJoints(path, &j);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("pose 1"), std::string::npos) << s.message();
+}
+
+}  // namespace
+}  // namespace tpopt
