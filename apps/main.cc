@@ -1,7 +1,68 @@
-// Placeholder entry point; the subcommands land in apps/.
+// tpopt: smooth 5-axis flank-milling tool paths. See README.md.
 #include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
 
-int main() {
-  std::fprintf(stderr, "usage: tpopt <generate|evaluate|smooth> [flags]\n");
-  return 2;
+#include <gflags/gflags.h>
+#include <glog/logging.h>
+
+#include "apps/commands.h"
+#include "apps/exit_codes.h"
+#include "apps/flag_parser.h"
+#include "apps/flags.h"
+
+namespace {
+
+constexpr char kUsage[] =
+    "usage: tpopt <subcommand> [--flag=value ...] [--flagfile=F]\n"
+    "\n"
+    "subcommands:\n"
+    "  generate  --surface=S --cutter_radius=R --poses=N --strategy=spo|dpo\n"
+    "            [--uv_distortion=AMP] [--axis_noise_deg=D] --out=P.cls\n"
+    "  evaluate  --in=P [--surface=S] [--machine=M] --report=R.json\n"
+    "  smooth    --in=P --out=Q [--surface=S] [--machine=M] --mode=spline|high_accuracy\n"
+    "            [weights...] --report=R.json\n"
+    "\n"
+    "Exit codes: 0 success, 1 bad input, 2 usage, 3 solver failure.\n"
+    "`tpopt --help` lists every flag.\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  gflags::SetUsageMessage(kUsage);
+  gflags::SetVersionString("0.1.0");
+  FLAGS_logtostderr = true;
+  google::InitGoogleLogging(argv[0]);
+  if (argc < 2) {
+    std::fputs(kUsage, stderr);
+    return tpopt::kExitUsage;
+  }
+  const std::string sub = argv[1];
+  if (sub == "--help" || sub == "-h" || sub == "help") {
+    gflags::ShowUsageWithFlagsRestrict(argv[0], "apps/flags");
+    return tpopt::kExitSuccess;
+  }
+  if (sub == "--version") {
+    std::printf("tpopt %s\n", gflags::VersionString());
+    return tpopt::kExitSuccess;
+  }
+  std::vector<std::string> args(argv + 2, argv + argc);
+  std::vector<std::string> positional;
+  const tpopt::Status parsed = tpopt::ParseFlags(args, &positional);
+  if (!parsed.ok()) {
+    std::fprintf(stderr, "tpopt %s: %s\n", sub.c_str(), parsed.message().c_str());
+    return tpopt::kExitUsage;
+  }
+  if (!positional.empty()) {
+    std::fprintf(stderr, "tpopt %s: unexpected argument '%s'\n%s", sub.c_str(),
+                 positional.front().c_str(), kUsage);
+    return tpopt::kExitUsage;
+  }
+  const tpopt::Invocation invocation{tpopt::JoinCommandLine(argc, argv)};
+  if (sub == "generate") return tpopt::RunGenerate(invocation);
+  if (sub == "evaluate") return tpopt::RunEvaluate(invocation);
+  if (sub == "smooth") return tpopt::RunSmooth(invocation);
+  std::fprintf(stderr, "tpopt: unknown subcommand '%s'\n%s", sub.c_str(), kUsage);
+  return tpopt::kExitUsage;
 }

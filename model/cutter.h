@@ -67,6 +67,24 @@ T SignedDistanceToCutter(const Cutter& cutter,
   return T(sqrt(radial * radial + axial * axial));
 }
 
+// Signed distance (mm) from q to the cutter's flank surface extended past
+// its caps: (r - R(t)) cos(taper), r the distance of q from the axis line,
+// t its height above the tip. Smooth everywhere except on the axis, which is
+// what an optimiser needs; the caps are handled by keeping the tip at the
+// contact rail (see solver/tip_height_cost.h).
+template <typename T>
+T SignedDistanceToFlank(const Cutter& cutter, const Eigen::Matrix<T, 3, 1>& q,
+                        const Eigen::Matrix<T, 3, 1>& tip,
+                        const Eigen::Matrix<T, 3, 1>& axis) {
+  using std::sqrt;
+  const Eigen::Matrix<T, 3, 1> d = q - tip;
+  const T t = d.dot(axis);
+  const T r2 = (d - t * axis).squaredNorm();
+  const T r = r2 > T(1e-24) ? T(sqrt(r2)) : T(0.0);
+  return (r - (T(cutter.radius_mm) + t * std::tan(cutter.taper_rad))) *
+         std::cos(cutter.taper_rad);
+}
+
 }  // namespace tpopt
 
 #endif  // TPOPT_MODEL_CUTTER_H_

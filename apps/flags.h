@@ -1,0 +1,33 @@
+// Every command-line flag of tpopt (only apps/ defines flags).
+#ifndef TPOPT_APPS_FLAGS_H_
+#define TPOPT_APPS_FLAGS_H_
+
+#include <gflags/gflags.h>
+
+// Inputs and outputs.
+DECLARE_string(surface);
+DECLARE_string(machine);
+DECLARE_string(in);
+DECLARE_string(out);
+DECLARE_string(report);
+DECLARE_bool(quiet);
+
+// Cutter (overrides what the path file says).
+DECLARE_double(cutter_radius);
+DECLARE_double(flute_length);
+
+// generate
+DECLARE_int32(poses);
+DECLARE_string(strategy);
+DECLARE_double(uv_distortion);
+DECLARE_double(distortion_center);
+DECLARE_double(distortion_width);
+DECLARE_double(axis_noise_deg);
+DECLARE_int32(noise_seed);
+DECLARE_double(feed);
+
+// evaluate
+DECLARE_int32(samples_u);
+DECLARE_int32(samples_v);
+
+#endif  // TPOPT_APPS_FLAGS_H_

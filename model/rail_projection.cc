@@ -1,0 +1,91 @@
+#include "model/rail_projection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tpopt {
+namespace {
+
+// g(u) = (C(u) - point) . C'(u): zero at a foot point, derivative
+// |C'|^2 + (C - point) . C''.
+double FootResidual(const BSplineCurve& curve, const Eigen::Vector3d& point, double u,
+                    double* slope) {
+  const auto d = curve.Evaluate(u, 2);
+  const Eigen::Vector3d diff = d[0] - point;
+  if (slope != nullptr) *slope = d[1].squaredNorm() + diff.dot(d[2]);
+  return diff.dot(d[1]);
+}
+
+}  // namespace
+
+double ProjectOntoCurve(const BSplineCurve& curve, const Eigen::Vector3d& point, double u_lo,
+                        double u_hi, int scan_samples) {
+  u_lo = std::clamp(u_lo, 0.0, 1.0);
+  u_hi = std::clamp(u_hi, u_lo, 1.0);
+  // Coarse scan for the nearest sample.
+  double best_u = u_lo, best_d = std::numeric_limits<double>::infinity();
+  const int n = std::max(scan_samples, 2);
+  for (int i = 0; i <= n; ++i) {
+    const double u = u_lo + (u_hi - u_lo) * i / n;
+    const double d = (curve.Point(u) - point).squaredNorm();
+    if (d < best_d) {
+      best_d = d;
+      best_u = u;
+    }
+  }
+  // Bracket the foot point within one scan step and refine by Newton, kept
+  // inside the bracket by bisection.
+  const double step = (u_hi - u_lo) / n;
+  double lo = std::max(u_lo, best_u - step), hi = std::min(u_hi, best_u + step);
+  double g_lo = FootResidual(curve, point, lo, nullptr);
+  const double g_hi = FootResidual(curve, point, hi, nullptr);
+  if (g_lo >= 0 && g_hi >= 0) return lo;  // foot at or before the low end
+  if (g_lo <= 0 && g_hi <= 0) return hi;  // foot at or beyond the high end
+  double u = best_u;
+  for (int iter = 0; iter < 60 && hi - lo > 1e-15; ++iter) {
+    double slope = 0.0;
+    const double g = FootResidual(curve, point, u, &slope);
+    if ((g < 0) == (g_lo < 0)) {
+      lo = u;
+      g_lo = g;
+    } else {
+      hi = u;
+    }
+    double next = slope > 0 ? u - g / slope : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (std::abs(next - u) < 1e-15) break;
+    u = next;
+  }
+  return u;
+}
+
+std::vector<double> ProjectPathOntoRail(const BSplineCurve& rail, const ToolPath& path,
+                                        double window_u) {
+  std::vector<double> u(path.poses.size(), 0.0);
+  bool have_previous = false;
+  double previous = 0.0;
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    if (path.poses[i].rapid) continue;
+    const Eigen::Vector3d& p = path.poses[i].p_w_tip;
+    const double lo = std::max(0.0, previous - window_u), hi = std::min(1.0, previous + window_u);
+    u[i] = have_previous ? ProjectOntoCurve(rail, p, lo, hi, 16) : -1.0;
+    // A foot on the window's edge means the step was larger than the
+    // window: search the whole rail instead.
+    if (!have_previous || (u[i] == lo && lo > 0.0) || (u[i] == hi && hi < 1.0)) {
+      u[i] = ProjectOntoCurve(rail, p, 0.0, 1.0, 256);
+    }
+    previous = u[i];
+    have_previous = true;
+  }
+  // Rapids take the u of the nearest cutting pose before them (or after).
+  for (size_t i = 1; i < u.size(); ++i) {
+    if (path.poses[i].rapid) u[i] = u[i - 1];
+  }
+  for (size_t i = u.size(); i-- > 1;) {
+    if (path.poses[i - 1].rapid) u[i - 1] = u[i];
+  }
+  return u;
+}
+
+}  // namespace tpopt

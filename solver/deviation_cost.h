@@ -1,0 +1,100 @@
+// Deviation of the swept cutter from the ruled surface.
+//
+// For a pose (or a point of the joint-space move between two poses) and the
+// surface points q_k = r(u, v_k) of the ruling it is tied to, the residual
+// is the signed distance from q_k to the cutter's flank, in units of the
+// tolerance, with overcut (negative distance: the tool is inside the
+// material) weighted by `overcut_factor`:
+//   d_k = SignedDistanceToFlank(q_k, p_w_tip, a_w)              [mm]
+//   r_k = sqrt(w h / (L n)) * d_k / tol * (d_k < 0 ? overcut_factor : 1)
+// with n sample points per ruling, h the arc-length step the ruling stands
+// for and L the path length, so that the cost approximates
+//   E = w (1/L) integral mean_k (d_k / tol)^2 ds,
+// dimensionless, independent of point density; w is dimensionless.
+//
+// Between poses the controller interpolates its joints linearly, so the pose
+// at fraction lambda of the move i -> i+1 is J = (1 - lambda) J_i + lambda
+// J_i+1 mapped back to W by the kinematics; the two-pose form evaluates the
+// ruling at the matching surface parameter against that pose.
+#ifndef TPOPT_SOLVER_DEVIATION_COST_H_
+#define TPOPT_SOLVER_DEVIATION_COST_H_
+
+#include <cmath>
+#include <vector>
+
+#include <ceres/ceres.h>
+
+#include "model/cutter.h"
+#include "model/machine.h"
+#include "solver/pose_parameters.h"
+
+namespace tpopt {
+
+class DeviationCost {
+ public:
+  struct Settings {
+    Cutter cutter;
+    KinematicParams kinematics;
+    double tolerance_mm = 0.01;
+    double overcut_factor = 3.0;
+  };
+
+  // points_w: the ruling's sample points in W; scale = sqrt(w h / (L n)).
+  DeviationCost(std::vector<Eigen::Vector3d> points_w, const Settings& settings, double scale,
+                double lambda = 0.0)
+      : points_w_(std::move(points_w)), settings_(settings), scale_(scale), lambda_(lambda) {}
+
+  template <typename T>
+  bool operator()(const T* const pose, T* r) const {
+    Residuals(PoseTip(pose), PoseAxis(pose), r);
+    return true;
+  }
+
+  template <typename T>
+  bool operator()(const T* const pose0, const T* const pose1, T* r) const {
+    const Eigen::Matrix<T, 5, 1> j0 = PoseJoints(settings_.kinematics, pose0);
+    const Eigen::Matrix<T, 5, 1> j1 = PoseJoints(settings_.kinematics, pose1);
+    const Eigen::Matrix<T, 5, 1> j = T(1.0 - lambda_) * j0 + T(lambda_) * j1;
+    const Eigen::Matrix<T, 3, 1> tip =
+        JointsToWorkpiece<T>(settings_.kinematics, j[kX], j[kY], j[kZ], j[kA], j[kC]);
+    Residuals(tip, AnglesToAxis<T>(j[kA], j[kC]), r);
+    return true;
+  }
+
+  // Residuals for one pose.
+  static ceres::CostFunction* CreateAtPose(std::vector<Eigen::Vector3d> points_w,
+                                           const Settings& settings, double scale) {
+    const int n = static_cast<int>(points_w.size());
+    return new ceres::AutoDiffCostFunction<DeviationCost, ceres::DYNAMIC, kPoseSize>(
+        new DeviationCost(std::move(points_w), settings, scale), n);
+  }
+
+  // Residuals at fraction lambda of the joint-space move between two poses.
+  static ceres::CostFunction* CreateBetweenPoses(std::vector<Eigen::Vector3d> points_w,
+                                                 const Settings& settings, double scale,
+                                                 double lambda) {
+    const int n = static_cast<int>(points_w.size());
+    return new ceres::AutoDiffCostFunction<DeviationCost, ceres::DYNAMIC, kPoseSize, kPoseSize>(
+        new DeviationCost(std::move(points_w), settings, scale, lambda), n);
+  }
+
+ private:
+  template <typename T>
+  void Residuals(const Eigen::Matrix<T, 3, 1>& tip, const Eigen::Matrix<T, 3, 1>& axis,
+                 T* r) const {
+    for (size_t k = 0; k < points_w_.size(); ++k) {
+      const T d = SignedDistanceToFlank<T>(settings_.cutter, points_w_[k].cast<T>(), tip, axis);
+      const double factor = d < T(0.0) ? settings_.overcut_factor : 1.0;
+      r[k] = T(scale_ * factor / settings_.tolerance_mm) * d;
+    }
+  }
+
+  std::vector<Eigen::Vector3d> points_w_;
+  Settings settings_;
+  double scale_;
+  double lambda_;
+};
+
+}  // namespace tpopt
+
+#endif  // TPOPT_SOLVER_DEVIATION_COST_H_

@@ -1,0 +1,48 @@
+#include "model/rail_projection.h"
+
+#include <gtest/gtest.h>
+
+namespace tpopt {
+namespace {
+
+// Quarter circle of radius 10 as a quadratic Bezier is not a circle, so use
+// a cubic curve and check the defining property of the foot point instead.
+BSplineCurve Curve() {
+  BSplineCurve c;
+  EXPECT_TRUE(BSplineCurve::Create(3, {0, 0, 0, 0, 0.5, 1, 1, 1, 1},
+                                   {{0, 0, 0}, {10, 5, 0}, {20, -5, 2}, {30, 0, 0}, {40, 8, 1}},
+                                   "c", &c)
+                  .ok());
+  return c;
+}
+
+TEST(RailProjectionTest, FootPointIsOrthogonalAndRecoversKnownU) {
+  const BSplineCurve c = Curve();
+  for (double u : {0.05, 0.3, 0.5, 0.77, 0.95}) {
+    const auto d = c.Evaluate(u, 1);
+    // Offset 3 mm along a direction normal to the tangent.
+    Eigen::Vector3d normal = d[1].cross(Eigen::Vector3d::UnitZ()).normalized();
+    const Eigen::Vector3d point = d[0] + 3.0 * normal;
+    const double found = ProjectOntoCurve(c, point);
+    EXPECT_NEAR(found, u, 1e-9);
+  }
+  // Beyond the ends the foot clamps to them.
+  EXPECT_EQ(ProjectOntoCurve(c, {-10, 0, 0}), 0.0);
+  EXPECT_EQ(ProjectOntoCurve(c, {60, 10, 1}), 1.0);
+}
+
+TEST(RailProjectionTest, PathProjectionIsMonotoneEvenWithLargeSteps) {
+  const BSplineCurve c = Curve();
+  ToolPath path;
+  for (int i = 0; i <= 8; ++i) {
+    ToolPose pose;
+    pose.p_w_tip = c.Point(i / 8.0) + Eigen::Vector3d(0, 0, 2);
+    path.poses.push_back(pose);
+  }
+  const std::vector<double> u = ProjectPathOntoRail(c, path);
+  for (size_t i = 0; i < u.size(); ++i) EXPECT_NEAR(u[i], i / 8.0, 0.02) << i;
+  for (size_t i = 1; i < u.size(); ++i) EXPECT_GT(u[i], u[i - 1]);
+}
+
+}  // namespace
+}  // namespace tpopt
