@@ -1,0 +1,270 @@
+#include "solver/ceres_smoother.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include <glog/logging.h>
+
+#include "model/axis_metrics.h"
+#include "model/rail_projection.h"
+#include "solver/axis_limit_cost.h"
+#include "solver/deviation_cost.h"
+#include "solver/smoothness_cost.h"
+#include "solver/tip_height_cost.h"
+
+namespace tpopt {
+namespace {
+
+// Divided differences need distinct abscissae; a repeated pose gets this
+// much arc length (mm) or time (s).
+constexpr double kMinStep = 1e-6;
+
+// Prints one line per Ceres iteration on stderr.
+class ProgressPrinter : public ceres::IterationCallback {
+ public:
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    std::fprintf(stderr, "  high_accuracy iter %3d  cost %.6e  change %+.3e  |step| %.3e\n",
+                 s.iteration, s.cost, -s.cost_change, s.step_norm);
+    return ceres::SOLVER_CONTINUE;
+  }
+};
+
+// Poses that may move: not rapid targets, and on a cutting move.
+std::vector<bool> FreePoses(const ToolPath& path) {
+  const size_t n = path.poses.size();
+  std::vector<bool> cutting(n, false);
+  for (size_t i = 0; i + 1 < n; ++i) {
+    if (!path.poses[i + 1].rapid) cutting[i] = cutting[i + 1] = true;
+  }
+  for (size_t i = 0; i < n; ++i) cutting[i] = cutting[i] && !path.poses[i].rapid;
+  return cutting;
+}
+
+// True when poses first..first+count-1 are joined by cutting moves.
+bool Connected(const ToolPath& path, size_t first, size_t count) {
+  for (size_t j = first + 1; j < first + count; ++j) {
+    if (path.poses[j].rapid) return false;
+  }
+  return true;
+}
+
+template <int kCount>
+std::array<double, kCount> Window(const std::vector<double>& v, size_t first) {
+  std::array<double, kCount> out;
+  for (int j = 0; j < kCount; ++j) out[j] = v[first + j];
+  return out;
+}
+
+std::vector<Eigen::Vector3d> RulingPoints(const RuledSurface& surface, double u, int samples) {
+  std::vector<Eigen::Vector3d> points(samples);
+  for (int k = 0; k < samples; ++k) points[k] = surface.Point(u, k / (samples - 1.0));
+  return points;
+}
+
+// Adds the stencils of one derivative family over every connected window.
+template <int kOrder, typename MakeCost>
+void AddStencils(const ToolPath& path, const std::vector<bool>& free_pose, SmoothingState* state,
+                 ceres::Problem* problem, const std::string& family, MakeCost make_cost) {
+  const size_t n = path.poses.size();
+  for (size_t i = 0; i + kOrder < n; ++i) {
+    if (!Connected(path, i, kOrder + 1)) continue;
+    bool any_free = false;
+    std::vector<double*> blocks;
+    for (size_t j = i; j <= i + kOrder; ++j) {
+      any_free = any_free || free_pose[j];
+      blocks.push_back(state->poses[j].data());
+    }
+    if (!any_free) continue;
+    ceres::CostFunction* cost = make_cost(i);
+    if (cost == nullptr) continue;
+    state->families[family].push_back(problem->AddResidualBlock(cost, nullptr, blocks));
+  }
+}
+
+template <int kOrder>
+void AddLimitFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
+                    const std::vector<bool>& free_pose, SmoothingState* state,
+                    ceres::Problem* problem) {
+  std::array<double, 5> limits;
+  bool any = false;
+  for (int a = 0; a < 5; ++a) {
+    const AxisLimits& l = in.machine->limits[a];
+    limits[a] = kOrder == 1 ? l.max_velocity : kOrder == 2 ? l.max_acceleration : l.max_jerk;
+    any = any || std::isfinite(limits[a]);
+  }
+  if (!any || o.w_limits <= 0) return;
+  AddStencils<kOrder>(*in.input, free_pose, state, problem, "limits", [&](size_t i) {
+    const double h = (state->s_mm[i + kOrder] - state->s_mm[i]) / kOrder;
+    return AxisLimitCost<kOrder>::Create(Window<kOrder + 1>(state->t_s, i), limits,
+                                         in.machine->kinematics,
+                                         std::sqrt(o.w_limits * h / length_mm), o.limit_margin);
+  });
+}
+
+void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                        double length_mm, const std::vector<bool>& free_pose,
+                        SmoothingState* state, ceres::Problem* problem) {
+  DeviationCost::Settings settings{*in.cutter, in.machine->kinematics, o.tolerance_mm,
+                                   o.overcut_factor};
+  const ToolPath& path = *in.input;
+  const size_t n = path.poses.size();
+  const int m = o.ruling_samples;
+  const int parts = o.between_samples + 1;  // the pose and the points after it
+  for (size_t i = 0; i < n; ++i) {
+    if (!free_pose[i]) continue;
+    const double back = (i > 0 && !path.poses[i].rapid) ? state->s_mm[i] - state->s_mm[i - 1] : 0;
+    const bool forward_cut = i + 1 < n && !path.poses[i + 1].rapid;
+    const double ahead = forward_cut ? state->s_mm[i + 1] - state->s_mm[i] : 0;
+    // The pose stands for 1/parts of each neighbouring move.
+    const double h_pose = (back + ahead) / (2.0 * parts);
+    std::vector<ceres::ResidualBlockId>& ids = state->families["deviation"];
+    ids.push_back(problem->AddResidualBlock(
+        DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], m), settings,
+                                    std::sqrt(o.w_deviation * h_pose / (length_mm * m))),
+        nullptr, state->poses[i].data()));
+    if (!forward_cut) continue;
+    for (int k = 1; k < parts; ++k) {
+      const double lambda = static_cast<double>(k) / parts;
+      const double u = (1 - lambda) * state->u[i] + lambda * state->u[i + 1];
+      const double scale = std::sqrt(o.w_deviation * ahead / parts / (length_mm * m));
+      ids.push_back(problem->AddResidualBlock(
+          DeviationCost::CreateBetweenPoses(RulingPoints(*in.surface, u, m), settings, scale,
+                                            lambda),
+          nullptr, state->poses[i].data(), state->poses[i + 1].data()));
+    }
+  }
+}
+
+}  // namespace
+
+bool HighAccuracyOptions::IsValid(std::string* why) const {
+  std::ostringstream err;
+  const double weights[] = {w_deviation, w_second, w_third, w_tip_second,
+                            w_tip_third, w_limits, w_tip_height};
+  if (!(tolerance_mm > 0) || !std::isfinite(tolerance_mm)) {
+    err << "tolerance " << tolerance_mm << " mm must be > 0";
+  } else if (!(overcut_factor >= 1) || !std::isfinite(overcut_factor)) {
+    err << "overcut factor " << overcut_factor << " must be >= 1";
+  } else if (std::any_of(std::begin(weights), std::end(weights),
+                         [](double w) { return !(w >= 0) || !std::isfinite(w); })) {
+    err << "every weight must be finite and >= 0";
+  } else if (!(limit_margin > 0 && limit_margin <= 1)) {
+    err << "limit margin " << limit_margin << " must be in (0, 1]";
+  } else if (ruling_samples < 2 || between_samples < 0) {
+    err << "ruling samples " << ruling_samples << " must be >= 2 and between samples "
+        << between_samples << " >= 0";
+  } else if (!(default_feed_mm_per_min > 0)) {
+    err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
+  } else if (max_iterations < 0 || num_threads < 1) {
+    err << "max iterations " << max_iterations << " must be >= 0 and threads " << num_threads
+        << " >= 1";
+  } else {
+    return true;
+  }
+  if (why != nullptr) *why = err.str();
+  return false;
+}
+
+Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                    SmoothingState* state, ceres::Problem* problem) {
+  CHECK(in.input && in.surface && in.cutter && in.machine && state && problem);
+  const ToolPath& guess = in.initial_guess ? *in.initial_guess : *in.input;
+  const ToolPath& path = *in.input;
+  const size_t n = path.poses.size();
+  if (guess.poses.size() != n) {
+    return Status::Error("initial guess has " + std::to_string(guess.poses.size()) +
+                         " poses, the input " + std::to_string(n));
+  }
+  std::vector<JointVector> joints;
+  Status s = in.machine->AssignJoints(guess, &joints);
+  if (!s.ok()) return s;
+  state->poses.resize(n);
+  state->s_mm.assign(n, 0.0);
+  state->t_s.assign(n, 0.0);
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d& p = guess.poses[i].p_w_tip;
+    state->poses[i] = {joints[i][kA], joints[i][kC], p.x(), p.y(), p.z()};
+    if (i == 0) continue;
+    const double ds = (p - guess.poses[i - 1].p_w_tip).norm();
+    state->s_mm[i] = state->s_mm[i - 1] + std::max(ds, kMinStep);
+    const double dt = SegmentTime(*in.machine, path, joints, i - 1, o.default_feed_mm_per_min);
+    state->t_s[i] = state->t_s[i - 1] + std::max(dt, kMinStep);
+  }
+  state->u = ProjectPathOntoRail(in.surface->rail(0), path);
+  const double length_mm = std::max(state->s_mm.back(), kMinStep);
+  const std::vector<bool> free_pose = FreePoses(path);
+  for (size_t i = 0; i < n; ++i) {
+    problem->AddParameterBlock(state->poses[i].data(), kPoseSize);
+    if (!free_pose[i]) problem->SetParameterBlockConstant(state->poses[i].data());
+  }
+  AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
+  for (size_t i = 0; i < n; ++i) {
+    if (!free_pose[i] || o.w_tip_height <= 0) continue;
+    const double h = (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2;
+    state->families["tip_height"].push_back(problem->AddResidualBlock(
+        TipHeightCost::Create(in.surface->rail(0).Point(state->u[i]),
+                              std::sqrt(o.w_tip_height * h / length_mm) / o.tolerance_mm),
+        nullptr, state->poses[i].data()));
+  }
+  AddStencils<2>(path, free_pose, state, problem, "second", [&](size_t i) {
+    return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm, o.w_second,
+                                     o.w_tip_second);
+  });
+  AddStencils<3>(path, free_pose, state, problem, "third", [&](size_t i) {
+    return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm, o.w_third,
+                                     o.w_tip_third);
+  });
+  AddLimitFamily<1>(in, o, length_mm, free_pose, state, problem);
+  AddLimitFamily<2>(in, o, length_mm, free_pose, state, problem);
+  AddLimitFamily<3>(in, o, length_mm, free_pose, state, problem);
+  return Status::Ok();
+}
+
+Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                          ToolPath* out, HighAccuracyReport* report) {
+  std::string why;
+  if (!options.IsValid(&why)) return Status::Error("high_accuracy options: " + why);
+  const auto start = std::chrono::steady_clock::now();
+  ceres::Problem problem;
+  SmoothingState state;
+  Status s = BuildProblem(inputs, options, &state, &problem);
+  if (!s.ok()) return s;
+
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  solver_options.max_num_iterations = options.max_iterations;
+  solver_options.function_tolerance = options.function_tolerance;
+  solver_options.num_threads = options.num_threads;
+  solver_options.logging_type = ceres::SILENT;
+  ProgressPrinter printer;
+  if (options.progress) solver_options.callbacks.push_back(&printer);
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+
+  report->converged = summary.IsSolutionUsable();
+  report->message = summary.message;
+  report->iterations = static_cast<int>(summary.iterations.size()) - 1;
+  report->initial_cost = summary.initial_cost;
+  report->final_cost = summary.final_cost;
+  for (const auto& [family, blocks] : state.families) {
+    ceres::Problem::EvaluateOptions eval;
+    eval.residual_blocks = blocks;
+    double cost = 0.0;
+    problem.Evaluate(eval, &cost, nullptr, nullptr, nullptr);
+    report->final_cost_by_family[family] = cost;
+  }
+  *out = *inputs.input;
+  for (size_t i = 0; i < out->poses.size(); ++i) {
+    const auto& p = state.poses[i];
+    out->poses[i].p_w_tip = Eigen::Vector3d(p[kPoseTip], p[kPoseTip + 1], p[kPoseTip + 2]);
+    out->poses[i].a_w = AnglesToAxis<double>(p[kPoseA], p[kPoseC]);
+  }
+  report->solve_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return Status::Ok();
+}
+
+}  // namespace tpopt

@@ -1,0 +1,111 @@
+// High-accuracy mode: the tool path as a nonlinear least-squares problem.
+//
+// Variables: per pose [A, C, p_w_tip] (solver/pose_parameters.h). Each pose
+// is tied to the surface parameter u_i of its contact ruling, found by
+// projecting the *input* CL pose onto rail 0 (model/rail_projection.h).
+// Residual families, each a functor with its formula in its header:
+//   deviation   solver/deviation_cost.h     swept cutter vs ruled surface
+//   tip height  solver/tip_height_cost.h    removes the slide along the axis
+//   second      solver/smoothness_cost.h    d2/ds2 of A, C and the tip
+//   third       solver/smoothness_cost.h    d3/ds3 of A, C and the tip
+//   limits      solver/axis_limit_cost.h    axis velocity/acceleration/jerk
+// Every family is scaled as an integral over arc length divided by the path
+// length, so a weight means the same at any point density.
+#ifndef TPOPT_SOLVER_CERES_SMOOTHER_H_
+#define TPOPT_SOLVER_CERES_SMOOTHER_H_
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <ceres/ceres.h>
+
+#include "model/cutter.h"
+#include "model/machine.h"
+#include "model/ruled_surface.h"
+#include "model/status.h"
+#include "model/tool_path.h"
+
+namespace tpopt {
+
+struct HighAccuracyOptions {
+  // Deviation the cost is measured in, mm. > 0.
+  double tolerance_mm = 0.01;
+  // Overcut counts this many times more than undercut. >= 1.
+  double overcut_factor = 3.0;
+  // Weight of the deviation family (dimensionless).
+  double w_deviation = 1.0;
+  // Weights of the second/third derivative of A and C over arc length,
+  // mm^4/rad^2 and mm^6/rad^2 (see smoothness_cost.h).
+  double w_second = 1e3;
+  double w_third = 1e4;
+  // Weights of the second/third derivative of the tip, mm^2 and mm^4.
+  double w_tip_second = 1e-2;
+  double w_tip_third = 0.0;
+  // Weight of the axis-limit penalties (dimensionless, one-sided).
+  double w_limits = 1e4;
+  // The limit penalties start at this fraction of each limit. (0, 1].
+  double limit_margin = 0.95;
+  // Weight of the tip-height gauge (dimensionless).
+  double w_tip_height = 1.0;
+  // Sample points along each ruling for the deviation family. >= 2.
+  int ruling_samples = 7;
+  // Joint-space points between neighbouring poses checked for deviation
+  // (0 = poses only).
+  int between_samples = 1;
+  // Programmed feed where the path has none, mm/min. > 0.
+  double default_feed_mm_per_min = 1000.0;
+  int max_iterations = 100;
+  // Ceres' relative cost-change stop.
+  double function_tolerance = 1e-9;
+  int num_threads = 1;
+  // Print one line per iteration on stderr.
+  bool progress = true;
+
+  bool IsValid(std::string* why) const;
+};
+
+// What the problem is built from. All pointers are non-null except that the
+// initial guess defaults to the input when absent.
+struct SmoothingInputs {
+  const ToolPath* input = nullptr;          // the CAM path (gives u_i, feeds)
+  const ToolPath* initial_guess = nullptr;  // same pose count as input
+  const RuledSurface* surface = nullptr;
+  const Cutter* cutter = nullptr;
+  const Machine* machine = nullptr;
+};
+
+// Variables and bookkeeping of a built problem.
+struct SmoothingState {
+  std::vector<std::array<double, 5>> poses;  // [A, C, x, y, z] per pose
+  std::vector<double> u;                     // contact ruling per pose
+  std::vector<double> s_mm;                  // arc length of the initial guess
+  std::vector<double> t_s;                   // planned time at programmed feed
+  // Residual blocks of each family, for per-family cost reports.
+  std::map<std::string, std::vector<ceres::ResidualBlockId>> families;
+};
+
+struct HighAccuracyReport {
+  bool converged = false;  // Ceres reported a usable solution
+  std::string message;     // Ceres' termination message
+  int iterations = 0;
+  double solve_time_s = 0.0;
+  double initial_cost = 0.0;
+  double final_cost = 0.0;
+  std::map<std::string, double> final_cost_by_family;
+};
+
+// Fills `state` and adds every residual block to `problem`.
+Status BuildProblem(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                    SmoothingState* state, ceres::Problem* problem);
+
+// Builds, solves and writes the optimised path (same poses, feeds and
+// rapids as the input) to `out`. Fails on bad input; a Ceres failure is
+// reported through `report->converged`.
+Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                          ToolPath* out, HighAccuracyReport* report);
+
+}  // namespace tpopt
+
+#endif  // TPOPT_SOLVER_CERES_SMOOTHER_H_

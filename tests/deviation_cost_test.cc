@@ -1,0 +1,69 @@
+#include "solver/deviation_cost.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/test_util.h"
+
+namespace tpopt {
+namespace {
+
+DeviationCost::Settings Settings() {
+  DeviationCost::Settings s;
+  s.cutter.radius_mm = 4.0;
+  s.cutter.flute_length_mm = 40.0;
+  s.kinematics.y_offset_mm = 20;
+  s.kinematics.z_offset_mm = 10;
+  s.tolerance_mm = 0.01;
+  s.overcut_factor = 3.0;
+  return s;
+}
+
+TEST(DeviationCostTest, ResidualIsTheFlankDistanceInTolerances) {
+  // Vertical tool at the origin; points at radii 4.02 (undercut 0.02) and
+  // 3.99 (overcut 0.01, weighted x3).
+  const std::vector<Eigen::Vector3d> points = {{4.02, 0, 5}, {0, -3.99, 12}};
+  std::unique_ptr<ceres::CostFunction> cost(
+      DeviationCost::CreateAtPose(points, Settings(), /*scale=*/1.0));
+  std::array<double, 5> pose = {0, 0, 0, 0, 0};  // A = C = 0: axis +Z
+  const double* params[] = {pose.data()};
+  double r[2];
+  ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[0], 2.0, 1e-9);
+  EXPECT_NEAR(r[1], -3.0, 1e-9);
+}
+
+TEST(DeviationCostTest, MidMoveUsesJointSpaceInterpolation) {
+  // Two poses with the same tip and C turned by 90 deg. The controller
+  // moves X, Y, Z, A, C linearly, so mid-move the tip in W is not the
+  // programmed tip: it is the forward kinematics of the joint midpoint.
+  Machine machine;
+  machine.kinematics = Settings().kinematics;
+  const double a = 0.3;
+  const Eigen::Vector3d tip(1, 2, 3);
+  std::array<double, 5> p0 = {a, 0.0, 1, 2, 3}, p1 = {a, M_PI / 2, 1, 2, 3};
+  const JointVector mid = 0.5 * (machine.ToJoints(tip, a, 0.0) + machine.ToJoints(tip, a, M_PI / 2));
+  Eigen::Vector3d mid_tip, mid_axis;
+  machine.ToWorkpiece(mid, &mid_tip, &mid_axis);
+  ASSERT_GT((mid_tip - tip).norm(), 0.1);  // the premise: W interpolation would differ
+  // A point 4.5 mm from the mid-move axis, 10 mm up it: undercut 0.5 mm.
+  const Eigen::Vector3d radial = mid_axis.cross(Eigen::Vector3d::UnitZ()).normalized();
+  const std::vector<Eigen::Vector3d> points = {mid_tip + 10 * mid_axis + 4.5 * radial};
+  std::unique_ptr<ceres::CostFunction> cost(
+      DeviationCost::CreateBetweenPoses(points, Settings(), 1.0, 0.5));
+  const double* params[] = {p0.data(), p1.data()};
+  double r[1];
+  ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[0], 50.0, 1e-6);
+}
+
+TEST(DeviationCostTest, JacobiansMatchNumericDifferences) {
+  const std::vector<Eigen::Vector3d> points = {{4.5, 0.3, 2}, {3.2, -1, 9}, {-2, 4.4, 15}};
+  std::array<double, 5> p0 = {0.2, 0.4, 0.1, -0.2, 0.05}, p1 = {0.25, 0.5, 0.3, 0.1, 0.0};
+  testing::ExpectJacobiansMatchNumeric(DeviationCost::CreateAtPose(points, Settings(), 0.7),
+                                       {p0.data()});
+  testing::ExpectJacobiansMatchNumeric(
+      DeviationCost::CreateBetweenPoses(points, Settings(), 0.7, 0.3), {p0.data(), p1.data()});
+}
+
+}  // namespace
+}  // namespace tpopt

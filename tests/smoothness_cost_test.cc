@@ -1,0 +1,55 @@
+#include "solver/smoothness_cost.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/test_util.h"
+
+namespace tpopt {
+namespace {
+
+// Poses whose A, C and x follow polynomials of the arc length s.
+std::array<double, 5> PoseAt(double s) {
+  return {0.01 * s * s, 0.002 * s * s * s, 3 * s * s, 1.0, -2.0};
+}
+
+TEST(SmoothnessCostTest, SecondDerivativeOfAQuadraticIsExactOnUnevenSteps) {
+  const std::array<double, 3> s = {0.0, 0.7, 2.0};
+  std::array<std::array<double, 5>, 3> p = {PoseAt(s[0]), PoseAt(s[1]), PoseAt(s[2])};
+  // w = L / h makes the scale 1, so residuals are the raw derivatives.
+  const double length = 10.0, h = 1.0;
+  std::unique_ptr<ceres::CostFunction> cost(
+      SmoothnessCost<2>::Create(s, length, length / h, length / h));
+  double r[5];
+  const double* params[] = {p[0].data(), p[1].data(), p[2].data()};
+  ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[kPoseA], 0.02, 1e-12);  // d2/ds2 of 0.01 s^2
+  EXPECT_NEAR(r[kPoseTip], 6.0, 1e-12);
+  EXPECT_NEAR(r[kPoseTip + 1], 0.0, 1e-12);
+}
+
+TEST(SmoothnessCostTest, ThirdDerivativeOfACubicIsExact) {
+  const std::array<double, 4> s = {0.0, 0.5, 1.75, 2.5};
+  std::array<std::array<double, 5>, 4> p = {PoseAt(s[0]), PoseAt(s[1]), PoseAt(s[2]),
+                                             PoseAt(s[3])};
+  const double length = 5.0, h = 2.5 / 3;
+  std::unique_ptr<ceres::CostFunction> cost(
+      SmoothnessCost<3>::Create(s, length, length / h, length / h));
+  double r[5];
+  const double* params[] = {p[0].data(), p[1].data(), p[2].data(), p[3].data()};
+  ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[kPoseC], 0.012, 1e-12);  // 6 * 0.002
+  EXPECT_NEAR(r[kPoseA], 0.0, 1e-12);
+}
+
+TEST(SmoothnessCostTest, JacobiansMatchNumericDifferences) {
+  std::array<std::array<double, 5>, 4> p = {PoseAt(0.1), PoseAt(1.0), PoseAt(2.2), PoseAt(3.0)};
+  testing::ExpectJacobiansMatchNumeric(
+      SmoothnessCost<2>::Create({0.1, 1.0, 2.2}, 10, 5, 0.5),
+      {p[0].data(), p[1].data(), p[2].data()});
+  testing::ExpectJacobiansMatchNumeric(
+      SmoothnessCost<3>::Create({0.1, 1.0, 2.2, 3.0}, 10, 5, 0.5),
+      {p[0].data(), p[1].data(), p[2].data(), p[3].data()});
+}
+
+}  // namespace
+}  // namespace tpopt
