@@ -1,0 +1,79 @@
+#include "apps/inputs.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "model/apt_io.h"
+#include "model/json_io.h"
+
+namespace tpopt {
+namespace {
+
+std::string Extension(const std::string& path) {
+  const size_t dot = path.find_last_of('.');
+  const size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  return ext;
+}
+
+double LongestRulingMm(const RuledSurface& surface) {
+  double longest = 0.0;
+  for (int i = 0; i <= 100; ++i) longest = std::max(longest, surface.Dv(i / 100.0).norm());
+  return longest;
+}
+
+}  // namespace
+
+Status LoadToolPath(const std::string& path, bool quiet, ToolPath* tool_path) {
+  const std::string ext = Extension(path);
+  if (ext != "cls" && ext != "apt" && ext != "cl") {
+    return Status::Error(path + ": unknown tool-path format '." + ext +
+                         "' (expected .cls, .apt or .cl)");
+  }
+  std::vector<std::string> warnings;
+  Status s = ReadApt(path, tool_path, &warnings);
+  if (!quiet) {
+    for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  }
+  return s;
+}
+
+Status LoadMachine(const std::string& path, Machine* machine) {
+  if (path.empty()) {
+    *machine = Machine();
+    machine->name = "ideal A/C table at the origin, no limits";
+    return Status::Ok();
+  }
+  return ReadMachineJson(path, machine);
+}
+
+Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
+                     double flute_flag_mm, Cutter* cutter) {
+  Cutter c;
+  const bool have_file = path.cutter.has_value();
+  if (have_file) c = *path.cutter;
+  if (radius_flag_mm != 0.0) {
+    c.radius_mm = radius_flag_mm;
+  } else if (!have_file) {
+    return Status::Error("the path names no cutter (TLDATA/CUTTER): give --cutter_radius");
+  }
+  if (flute_flag_mm != 0.0) {
+    c.flute_length_mm = flute_flag_mm;
+  } else if (!have_file) {
+    c.flute_length_mm = surface != nullptr ? 1.25 * LongestRulingMm(*surface) : 100.0;
+  }
+  Status s = c.Validate("cutter");
+  if (!s.ok()) return s;
+  *cutter = c;
+  return Status::Ok();
+}
+
+Status Require(const std::string& value, const std::string& flag) {
+  if (!value.empty()) return Status::Ok();
+  return Status::Error("--" + flag + " is required");
+}
+
+}  // namespace tpopt

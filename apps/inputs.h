@@ -1,0 +1,35 @@
+// Loading what a subcommand's flags name, with messages fit for a user.
+#ifndef TPOPT_APPS_INPUTS_H_
+#define TPOPT_APPS_INPUTS_H_
+
+#include <optional>
+#include <string>
+
+#include "model/cutter.h"
+#include "model/machine.h"
+#include "model/ruled_surface.h"
+#include "model/status.h"
+#include "model/tool_path.h"
+
+namespace tpopt {
+
+// A CL path by its extension: .cls, .apt or .cl (APT). Reader warnings go
+// to stderr unless quiet.
+Status LoadToolPath(const std::string& path, bool quiet, ToolPath* tool_path);
+
+// The machine file, or without one an ideal A/C table at the origin with
+// no limits (A/C metrics are exact; X/Y/Z are relative to that pivot).
+Status LoadMachine(const std::string& path, Machine* machine);
+
+// The cutter: --cutter_radius / --flute_length when set, else the path's
+// TLDATA/CUTTER; a path without one needs --cutter_radius. Without a flute
+// length anywhere, 1.25 x the surface's longest ruling (or 100 mm).
+Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
+                     double flute_flag_mm, Cutter* cutter);
+
+// Fails (usage) when a required flag is empty.
+Status Require(const std::string& value, const std::string& flag);
+
+}  // namespace tpopt
+
+#endif  // TPOPT_APPS_INPUTS_H_

@@ -1,0 +1,82 @@
+#include "apps/report.h"
+
+#include <cstdio>
+
+#include "model/atomic_file.h"
+
+namespace tpopt {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+nlohmann::json AxisJson(const AxisMotion& m, bool rotary) {
+  const double k = rotary ? kRadToDeg : 1.0;
+  return {{"units", rotary ? "deg" : "mm"},
+          {"peak_velocity", m.peak_velocity * k},
+          {"peak_acceleration", m.peak_acceleration * k},
+          {"peak_jerk", m.peak_jerk * k},
+          {"peak_second_derivative_per_mm2", m.peak_second_derivative_per_mm2 * k},
+          {"limit_violations", m.limit_violations}};
+}
+
+}  // namespace
+
+nlohmann::json MetricsJson(const PathMetrics& metrics) {
+  nlohmann::json j;
+  j["poses"] = metrics.poses;
+  if (metrics.deviation) {
+    const DeviationReport& d = *metrics.deviation;
+    j["max_overcut_mm"] = d.max_overcut_mm;
+    j["max_undercut_mm"] = d.max_undercut_mm;
+    j["rms_deviation_mm"] = d.rms_deviation_mm;
+    j["max_overcut_at"] = {{"u", d.overcut_u}, {"v", d.overcut_v}};
+    j["max_undercut_at"] = {{"u", d.undercut_u}, {"v", d.undercut_v}};
+  } else {
+    for (const char* key : {"max_overcut_mm", "max_undercut_mm", "rms_deviation_mm"}) {
+      j[key] = nullptr;
+    }
+  }
+  for (int a = 0; a < 5; ++a) {
+    j[kAxisNames[a]] = AxisJson(metrics.motion.axes[a], a >= kA);
+  }
+  j["limit_violations"] = metrics.motion.limit_violations;
+  j["worst_violation_pose"] = metrics.motion.worst_violation_pose;
+  j["machining_time_s"] = metrics.motion.machining_time_s;
+  j["path_length_mm"] = metrics.motion.path_length_mm;
+  if (!metrics.warning.empty()) j["warning"] = metrics.warning;
+  return j;
+}
+
+std::string Summary(const std::string& label, const PathMetrics& m) {
+  char buf[512];
+  std::string out;
+  if (m.deviation) {
+    std::snprintf(buf, sizeof(buf),
+                  "%s: %d poses, overcut %.4f mm at (u %.3f, v %.2f), undercut %.4f mm, "
+                  "rms %.4f mm\n",
+                  label.c_str(), m.poses, m.deviation->max_overcut_mm, m.deviation->overcut_u,
+                  m.deviation->overcut_v, m.deviation->max_undercut_mm,
+                  m.deviation->rms_deviation_mm);
+  } else {
+    std::snprintf(buf, sizeof(buf), "%s: %d poses (no surface: deviation not evaluated)\n",
+                  label.c_str(), m.poses);
+  }
+  out += buf;
+  const AxisMotion& a = m.motion.axes[kA];
+  const AxisMotion& c = m.motion.axes[kC];
+  std::snprintf(buf, sizeof(buf),
+                "  A peak %.2f deg/s, %.1f deg/s^2 | C peak %.2f deg/s, %.1f deg/s^2 | "
+                "%d limit violations | %.1f s\n",
+                a.peak_velocity * kRadToDeg, a.peak_acceleration * kRadToDeg,
+                c.peak_velocity * kRadToDeg, c.peak_acceleration * kRadToDeg,
+                m.motion.limit_violations, m.motion.machining_time_s);
+  out += buf;
+  if (!m.warning.empty()) out += "  note: " + m.warning + "\n";
+  return out;
+}
+
+Status WriteReport(const std::string& path, const nlohmann::json& report) {
+  return WriteFileAtomically(path, report.dump(2) + "\n");
+}
+
+}  // namespace tpopt

@@ -1,0 +1,29 @@
+// The report JSON (DESIGN.md "Command line") and the short human summary.
+#ifndef TPOPT_APPS_REPORT_H_
+#define TPOPT_APPS_REPORT_H_
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "model/path_metrics.h"
+#include "model/status.h"
+
+namespace tpopt {
+
+// Metrics of one path: max_overcut_mm, max_undercut_mm, rms_deviation_mm
+// (null without a surface) with where they occur, per axis A, C, X, Y, Z
+// its peak_velocity, peak_acceleration, peak_jerk (deg or mm per s, s^2,
+// s^3), peak second derivative over arc length and limit_violations, the
+// total limit_violations, machining_time_s, path length and poses.
+nlohmann::json MetricsJson(const PathMetrics& metrics);
+
+// A few lines for stderr/stdout: deviation, peak A/C motion, violations.
+std::string Summary(const std::string& label, const PathMetrics& metrics);
+
+// Writes `report` (pretty-printed) whole or not at all.
+Status WriteReport(const std::string& path, const nlohmann::json& report);
+
+}  // namespace tpopt
+
+#endif  // TPOPT_APPS_REPORT_H_

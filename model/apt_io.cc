@@ -1,0 +1,249 @@
+#include "model/apt_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "model/atomic_file.h"
+
+namespace tpopt {
+namespace {
+
+constexpr double kMaxMagnitude = 1e6;
+
+std::string Trim(const std::string& s) {
+  const size_t b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  const size_t e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
+std::string Upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// One logical statement: major word, comma-separated arguments, first line.
+struct Statement {
+  std::string word;
+  std::vector<std::string> args;
+  int line = 0;
+};
+
+Statement Split(const std::string& text, int line) {
+  Statement st;
+  st.line = line;
+  const size_t slash = text.find('/');
+  std::string word = Upper(Trim(text.substr(0, slash)));
+  // Collapse inner blanks so that "TOOL  PATH" reads as "TOOL PATH".
+  word.erase(std::unique(word.begin(), word.end(),
+                         [](char a, char b) { return a == ' ' && b == ' '; }),
+             word.end());
+  st.word = word;
+  if (slash == std::string::npos) return st;
+  std::stringstream rest(text.substr(slash + 1));
+  std::string arg;
+  while (std::getline(rest, arg, ',')) st.args.push_back(Trim(arg));
+  return st;
+}
+
+class AptReader {
+ public:
+  AptReader(const std::string& name, ToolPath* path, std::vector<std::string>* warnings)
+      : name_(name), path_(path), warnings_(warnings) {}
+
+  Status Read(std::istream& in) {
+    std::string line, text;
+    int first_line = 0;
+    for (int n = 1; std::getline(in, line); ++n) {
+      const size_t comment = line.find("$$");
+      if (comment != std::string::npos) line.erase(comment);
+      line = Trim(line);
+      if (line.empty() && text.empty()) continue;
+      if (text.empty()) first_line = n;
+      const bool continued = !line.empty() && line.back() == '$';
+      if (continued) line.pop_back();
+      text += line;
+      if (continued) continue;
+      Status s = Handle(Split(text, first_line));
+      if (!s.ok()) return s;
+      text.clear();
+    }
+    if (!text.empty()) {
+      return Error(first_line, "statement continued with '$' but the file ends");
+    }
+    if (path_->poses.empty()) return Status::Error(name_ + ": no GOTO: the path is empty");
+    return Status::Ok();
+  }
+
+ private:
+  Status Error(int line, const std::string& what) const {
+    return Status::Error(name_ + ":" + std::to_string(line) + ": " + what);
+  }
+
+  Status Number(const Statement& st, size_t k, double* out) const {
+    const std::string& a = st.args[k];
+    char* end = nullptr;
+    *out = std::strtod(a.c_str(), &end);
+    if (a.empty() || end == a.c_str() || *end != '\0') {
+      return Error(st.line, st.word + " argument " + std::to_string(k + 1) + " '" + a +
+                                "' is not a number");
+    }
+    if (!std::isfinite(*out) || std::abs(*out) > kMaxMagnitude) {
+      return Error(st.line, st.word + " argument " + std::to_string(k + 1) + " '" + a +
+                                "' is out of range (|v| <= 1e6)");
+    }
+    return Status::Ok();
+  }
+
+  Status Goto(const Statement& st) {
+    if (st.args.size() != 3 && st.args.size() != 6) {
+      return Error(st.line, "GOTO needs 3 or 6 numbers, got " + std::to_string(st.args.size()));
+    }
+    double v[6];
+    for (size_t k = 0; k < st.args.size(); ++k) {
+      Status s = Number(st, k, &v[k]);
+      if (!s.ok()) return s;
+    }
+    if (st.args.size() == 6) {
+      const Eigen::Vector3d a(v[3], v[4], v[5]);
+      if (!(a.norm() > 1e-9)) {
+        return Error(st.line, "zero-length tool axis (" + st.args[3] + ", " + st.args[4] + ", " +
+                                  st.args[5] + ")");
+      }
+      axis_ = a.normalized();
+    }
+    ToolPose pose;
+    pose.p_w_tip = Eigen::Vector3d(v[0], v[1], v[2]);
+    pose.a_w = axis_;
+    pose.feed_mm_per_min = feed_;
+    pose.rapid = rapid_next_;
+    pose.source_line = st.line;
+    rapid_next_ = false;
+    path_->poses.push_back(pose);
+    return Status::Ok();
+  }
+
+  Status Cutter(const Statement& st, size_t first_number) {
+    if (st.args.size() <= first_number) return Error(st.line, st.word + " has no diameter");
+    tpopt::Cutter cutter;
+    double d = 0.0;
+    Status s = Number(st, first_number, &d);
+    if (!s.ok()) return s;
+    cutter.radius_mm = 0.5 * d;
+    if (st.word == "TLDATA" && st.args.size() > first_number + 2) {
+      s = Number(st, first_number + 2, &cutter.flute_length_mm);
+      if (!s.ok()) return s;
+    }
+    s = cutter.Validate(name_ + ":" + std::to_string(st.line));
+    if (!s.ok()) return s;
+    path_->cutter = cutter;
+    return Status::Ok();
+  }
+
+  Status Feed(const Statement& st) {
+    for (size_t k = 0; k < st.args.size(); ++k) {
+      const std::string word = Upper(st.args[k]);
+      if (word == "MMPM" || word.empty()) continue;
+      if (word == "IPM" || word == "IPR" || word == "MMPR") {
+        return Error(st.line, "FEDRAT unit " + word + " is not supported (MMPM)");
+      }
+      Status s = Number(st, k, &feed_);
+      if (!s.ok()) return s;
+      if (!(feed_ > 0)) return Error(st.line, "FEDRAT " + st.args[k] + " must be > 0");
+      return Status::Ok();
+    }
+    return Error(st.line, "FEDRAT has no feed value");
+  }
+
+  Status Handle(const Statement& st) {
+    if (st.word == "GOTO") return Goto(st);
+    if (st.word == "TLDATA") return Cutter(st, 1);  // TLDATA/MILL,d,r,l
+    if (st.word == "CUTTER") return Cutter(st, 0);
+    if (st.word == "FEDRAT") return Feed(st);
+    if (st.word == "RAPID") {
+      rapid_next_ = true;
+      return Status::Ok();
+    }
+    if (st.word == "UNITS") {
+      if (!st.args.empty() && Upper(st.args[0]) != "MM") {
+        return Error(st.line, "UNITS/" + st.args[0] + " is not supported (UNITS/MM)");
+      }
+      return Status::Ok();
+    }
+    static const std::set<std::string> kIgnored = {
+        "MULTAX", "TOOL PATH", "PAINT", "END-OF-PATH", "FINI", "PARTNO", "LOADTL", "SPINDL",
+        "COOLNT", ""};
+    if (kIgnored.count(st.word) == 0 && warned_.insert(st.word).second && warnings_) {
+      warnings_->push_back(name_ + ":" + std::to_string(st.line) + ": statement '" + st.word +
+                           "' is not understood; skipped (warned once)");
+    }
+    return Status::Ok();
+  }
+
+  std::string name_;
+  ToolPath* path_;
+  std::vector<std::string>* warnings_;
+  Eigen::Vector3d axis_ = Eigen::Vector3d::UnitZ();
+  double feed_ = 0.0;
+  bool rapid_next_ = false;
+  std::set<std::string> warned_;
+};
+
+}  // namespace
+
+Status ReadAptStream(std::istream& in, const std::string& name, ToolPath* tool_path,
+                     std::vector<std::string>* warnings) {
+  ToolPath path;
+  AptReader reader(name, &path, warnings);
+  Status s = reader.Read(in);
+  if (!s.ok()) return s;
+  *tool_path = std::move(path);
+  return Status::Ok();
+}
+
+Status ReadApt(const std::string& path, ToolPath* tool_path, std::vector<std::string>* warnings) {
+  std::ifstream in(path);
+  if (!in) return Status::Error(path + ": cannot open file");
+  return ReadAptStream(in, path, tool_path, warnings);
+}
+
+std::string FormatApt(const ToolPath& tool_path) {
+  std::string out;
+  out.reserve(64 * tool_path.poses.size() + 256);
+  char buf[256];
+  out += "$$ " + (tool_path.title.empty() ? std::string("tpopt tool path") : tool_path.title) +
+         "\n";
+  out += "TOOL PATH/TPOPT\nUNITS/MM\nMULTAX/ON\n";
+  if (tool_path.cutter) {
+    std::snprintf(buf, sizeof(buf), "TLDATA/MILL,%.6f,0.000000,%.6f\n",
+                  2 * tool_path.cutter->radius_mm, tool_path.cutter->flute_length_mm);
+    out += buf;
+  }
+  double feed = -1.0;
+  for (const ToolPose& p : tool_path.poses) {
+    if (p.rapid) {
+      out += "RAPID\n";
+    } else if (p.feed_mm_per_min > 0 && p.feed_mm_per_min != feed) {
+      feed = p.feed_mm_per_min;
+      std::snprintf(buf, sizeof(buf), "FEDRAT/MMPM,%.6g\n", feed);
+      out += buf;
+    }
+    std::snprintf(buf, sizeof(buf), "GOTO/%.6f,%.6f,%.6f,%.9f,%.9f,%.9f\n", p.p_w_tip.x(),
+                  p.p_w_tip.y(), p.p_w_tip.z(), p.a_w.x(), p.a_w.y(), p.a_w.z());
+    out += buf;
+  }
+  out += "END-OF-PATH\nFINI\n";
+  return out;
+}
+
+Status WriteApt(const std::string& path, const ToolPath& tool_path) {
+  return WriteFileAtomically(path, FormatApt(tool_path));
+}
+
+}  // namespace tpopt

@@ -1,0 +1,44 @@
+// APT cutter-location files: the reader accepts what real CAM systems
+// write, the writer emits a plain 5-axis CL file that reads back exactly.
+//
+// Statements: GOTO/x,y,z[,i,j,k] (i,j,k modal; +Z before the first), `$` at
+// the end of a line continues the statement, `$$` starts a comment,
+// TLDATA/MILL,d,r,l,... and CUTTER/d[,r,...] give the cutter, FEDRAT/[MMPM,]f
+// the modal feed in mm/min, RAPID makes the next GOTO a rapid; MULTAX,
+// UNITS/MM, TOOL PATH, PAINT, END-OF-PATH, FINI, PARTNO, LOADTL, SPINDL and
+// COOLNT carry nothing tpopt needs. Any other statement is skipped with one
+// warning per distinct word.
+#ifndef TPOPT_MODEL_APT_IO_H_
+#define TPOPT_MODEL_APT_IO_H_
+
+#include <istream>
+#include <string>
+#include <vector>
+
+#include "model/status.h"
+#include "model/tool_path.h"
+
+namespace tpopt {
+
+// Reads `path` as a stream (memory grows with the poses, not the file).
+// Errors name the file, the line and the value: unreadable numbers, NaN,
+// Inf or |v| > 1e6, a GOTO with other than 3 or 6 numbers, a zero tool axis,
+// UNITS other than MM, a `$` continuation cut off by the end of file, or no
+// GOTO at all. Non-unit axes are normalised.
+Status ReadApt(const std::string& path, ToolPath* tool_path, std::vector<std::string>* warnings);
+
+// The same from an open stream; `name` stands for the file in messages.
+Status ReadAptStream(std::istream& in, const std::string& name, ToolPath* tool_path,
+                     std::vector<std::string>* warnings);
+
+// APT text: a `$$` header, UNITS/MM, MULTAX/ON, TLDATA when the cutter is
+// known, FEDRAT when the feed changes, RAPID before rapids, GOTO with 6
+// decimals of mm and 9 of the axis, END-OF-PATH and FINI.
+std::string FormatApt(const ToolPath& tool_path);
+
+// Writes FormatApt atomically (model/atomic_file.h).
+Status WriteApt(const std::string& path, const ToolPath& tool_path);
+
+}  // namespace tpopt
+
+#endif  // TPOPT_MODEL_APT_IO_H_

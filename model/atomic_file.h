@@ -1,0 +1,20 @@
+// Whole-or-nothing file output: a file tpopt writes is either complete or
+// absent, never half written.
+#ifndef TPOPT_MODEL_ATOMIC_FILE_H_
+#define TPOPT_MODEL_ATOMIC_FILE_H_
+
+#include <string>
+
+#include "model/status.h"
+
+namespace tpopt {
+
+// Writes `contents` to a temporary file beside `path`, flushes it to disk
+// and renames it over `path`. On failure (missing folder, read-only folder,
+// full disk) the temporary is removed, `path` is untouched and the message
+// names `path` and the system's reason.
+Status WriteFileAtomically(const std::string& path, const std::string& contents);
+
+}  // namespace tpopt
+
+#endif  // TPOPT_MODEL_ATOMIC_FILE_H_

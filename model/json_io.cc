@@ -1,0 +1,191 @@
+#include "model/json_io.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace tpopt {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kDegToRad = M_PI / 180.0;
+
+// Parses the whole file; a syntax error names its line.
+Status ParseFile(const std::string& path, json* out) {
+  std::ifstream in(path);
+  if (!in) return Status::Error(path + ": cannot open file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  try {
+    *out = json::parse(s);
+  } catch (const json::parse_error& e) {
+    const size_t byte = std::min<size_t>(e.byte, s.size());
+    const long line = 1 + std::count(s.begin(), s.begin() + byte, '\n');
+    return Status::Error(path + ":" + std::to_string(line) + ": malformed JSON (" + e.what() +
+                         ")");
+  }
+  if (!out->is_object()) return Status::Error(path + ": the top level must be a JSON object");
+  return Status::Ok();
+}
+
+// A finite number at j[key]; `what` names it in messages.
+Status Number(const json& j, const std::string& what, double* out) {
+  if (!j.is_number()) return Status::Error(what + " must be a number, got " + j.dump());
+  *out = j.get<double>();
+  if (!std::isfinite(*out)) return Status::Error(what + " is not finite");
+  return Status::Ok();
+}
+
+Status Point(const json& j, const std::string& what, Eigen::Vector3d* p) {
+  if (!j.is_array() || j.size() != 3) {
+    return Status::Error(what + " must be [x, y, z], got " + j.dump());
+  }
+  for (int k = 0; k < 3; ++k) {
+    Status s = Number(j[k], what + "[" + std::to_string(k) + "]", &(*p)[k]);
+    if (!s.ok()) return s;
+  }
+  return Status::Ok();
+}
+
+Status Rail(const json& j, const std::string& what, BSplineCurve* curve) {
+  if (!j.is_object()) return Status::Error(what + " must be an object");
+  if (!j.contains("degree") || !j["degree"].is_number_integer()) {
+    return Status::Error(what + ".degree must be an integer");
+  }
+  if (!j.contains("knots") || !j["knots"].is_array()) {
+    return Status::Error(what + ".knots must be an array");
+  }
+  if (!j.contains("control_points") || !j["control_points"].is_array()) {
+    return Status::Error(what + ".control_points must be an array");
+  }
+  std::vector<double> knots(j["knots"].size());
+  for (size_t k = 0; k < knots.size(); ++k) {
+    Status s = Number(j["knots"][k], what + ".knots[" + std::to_string(k) + "]", &knots[k]);
+    if (!s.ok()) return s;
+  }
+  std::vector<Eigen::Vector3d> points(j["control_points"].size());
+  for (size_t k = 0; k < points.size(); ++k) {
+    Status s = Point(j["control_points"][k], what + ".control_points[" + std::to_string(k) + "]",
+                     &points[k]);
+    if (!s.ok()) return s;
+  }
+  return BSplineCurve::Create(j["degree"].get<int>(), std::move(knots), std::move(points), what,
+                              curve);
+}
+
+// Optional number at j[key], in file units times `scale`.
+Status Optional(const json& j, const std::string& key, const std::string& what, double scale,
+                double* out) {
+  if (!j.contains(key) || j[key].is_null()) return Status::Ok();
+  double v = 0.0;
+  Status s = Number(j[key], what + "." + key, &v);
+  if (!s.ok()) return s;
+  *out = v * scale;
+  return Status::Ok();
+}
+
+Status AxisFromJson(const json& j, const std::string& what, double scale, AxisLimits* l) {
+  if (!j.is_object()) return Status::Error(what + " must be an object");
+  for (const auto& [key, value] : j.items()) {
+    static const char* kKeys[] = {"min", "max", "max_velocity", "max_acceleration", "max_jerk"};
+    if (std::find(std::begin(kKeys), std::end(kKeys), key) == std::end(kKeys)) {
+      return Status::Error(what + ": unknown key '" + key + "'");
+    }
+  }
+  Status s = Optional(j, "min", what, scale, &l->min);
+  if (s.ok()) s = Optional(j, "max", what, scale, &l->max);
+  if (s.ok()) s = Optional(j, "max_velocity", what, scale, &l->max_velocity);
+  if (s.ok()) s = Optional(j, "max_acceleration", what, scale, &l->max_acceleration);
+  if (s.ok()) s = Optional(j, "max_jerk", what, scale, &l->max_jerk);
+  if (!s.ok()) return s;
+  if (l->min > l->max) {
+    std::ostringstream err;
+    err << what << ": min " << l->min / scale << " is above max " << l->max / scale;
+    return Status::Error(err.str());
+  }
+  for (double v : {l->max_velocity, l->max_acceleration, l->max_jerk}) {
+    if (!(v > 0)) {
+      std::ostringstream err;
+      err << what << ": velocity, acceleration and jerk limits must be > 0, got " << v / scale;
+      return Status::Error(err.str());
+    }
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status ReadSurfaceJson(const std::string& path, RuledSurface* surface) {
+  json j;
+  Status s = ParseFile(path, &j);
+  if (!s.ok()) return s;
+  if (j.value("kind", std::string("ruled")) != "ruled") {
+    return Status::Error(path + ": kind " + j["kind"].dump() + " is not supported (\"ruled\")");
+  }
+  if (j.contains("units") && j["units"] != "mm") {
+    return Status::Error(path + ": units " + j["units"].dump() + " are not supported (\"mm\")");
+  }
+  CutterSide side = CutterSide::kPositive;
+  if (j.contains("cutter_side")) {
+    if (j["cutter_side"] == "negative") {
+      side = CutterSide::kNegative;
+    } else if (j["cutter_side"] != "positive") {
+      return Status::Error(path + ": cutter_side " + j["cutter_side"].dump() +
+                           " must be \"positive\" or \"negative\"");
+    }
+  }
+  if (!j.contains("rails") || !j["rails"].is_array() || j["rails"].size() != 2) {
+    return Status::Error(path + ": rails must be an array of exactly two curves");
+  }
+  BSplineCurve rails[2];
+  for (int i = 0; i < 2; ++i) {
+    s = Rail(j["rails"][i], path + ": rails[" + std::to_string(i) + "]", &rails[i]);
+    if (!s.ok()) return s;
+  }
+  const std::string name = j.contains("name") && j["name"].is_string() ? j["name"].get<std::string>()
+                                                                        : path;
+  *surface = RuledSurface(name, rails[0], rails[1], side);
+  return Status::Ok();
+}
+
+Status ReadMachineJson(const std::string& path, Machine* machine) {
+  json j;
+  Status s = ParseFile(path, &j);
+  if (!s.ok()) return s;
+  if (j.value("kinematics", std::string()) != "xyzac-trt") {
+    return Status::Error(path + ": kinematics " +
+                         (j.contains("kinematics") ? j["kinematics"].dump() : "(absent)") +
+                         " is not supported (\"xyzac-trt\")");
+  }
+  Machine m;
+  m.name = j.contains("name") && j["name"].is_string() ? j["name"].get<std::string>() : path;
+  if (j.contains("rotary_pivot")) {
+    s = Point(j["rotary_pivot"], path + ": rotary_pivot", &m.kinematics.rotary_pivot_mm);
+    if (!s.ok()) return s;
+  }
+  s = Optional(j, "y_offset", path + ": machine", 1.0, &m.kinematics.y_offset_mm);
+  if (s.ok()) s = Optional(j, "z_offset", path + ": machine", 1.0, &m.kinematics.z_offset_mm);
+  if (s.ok()) s = Optional(j, "tool_length", path + ": machine", 1.0, &m.kinematics.tool_length_mm);
+  if (!s.ok()) return s;
+  if (j.contains("axes")) {
+    if (!j["axes"].is_object()) return Status::Error(path + ": axes must be an object");
+    for (const auto& [key, value] : j["axes"].items()) {
+      const auto it = std::find(kAxisNames.begin(), kAxisNames.end(), key);
+      if (it == kAxisNames.end()) {
+        return Status::Error(path + ": axes." + key + " is not one of X, Y, Z, A, C");
+      }
+      const int axis = static_cast<int>(it - kAxisNames.begin());
+      s = AxisFromJson(value, path + ": axes." + key, axis >= kA ? kDegToRad : 1.0,
+                       &m.limits[axis]);
+      if (!s.ok()) return s;
+    }
+  }
+  *machine = m;
+  return Status::Ok();
+}
+
+}  // namespace tpopt

@@ -1,0 +1,116 @@
+#include "model/path_generator.h"
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include <glog/logging.h>
+
+namespace tpopt {
+namespace {
+
+// Unit normal on the cutter side of the (possibly distorted) ruling from
+// p1 to p2 with rail tangent t at its end; false if degenerate.
+bool RulingNormal(const RuledSurface& surface, const Eigen::Vector3d& tangent,
+                  const Eigen::Vector3d& ruling, Eigen::Vector3d* n) {
+  const Eigen::Vector3d cross = tangent.cross(ruling);
+  const double len = cross.norm();
+  if (!(len > 1e-12 * tangent.norm() * ruling.norm()) || !(len > 0)) return false;
+  *n = surface.side_sign() * cross / len;
+  return true;
+}
+
+// Tilts `axis` by a normally distributed angle about a random normal.
+Eigen::Vector3d Perturb(const Eigen::Vector3d& axis, double sigma_rad, std::mt19937* rng) {
+  std::normal_distribution<double> tilt(0.0, sigma_rad);
+  std::uniform_real_distribution<double> turn(0.0, 2.0 * M_PI);
+  const Eigen::Vector3d e1 = axis.unitOrthogonal();
+  const Eigen::Vector3d e2 = axis.cross(e1);
+  const double phi = turn(*rng);
+  const Eigen::Vector3d about = std::cos(phi) * e1 + std::sin(phi) * e2;
+  return Eigen::AngleAxisd(tilt(*rng), about) * axis;
+}
+
+}  // namespace
+
+bool FlankPathOptions::IsValid(std::string* why) const {
+  std::ostringstream err;
+  if (!(std::isfinite(cutter_radius_mm) && cutter_radius_mm > 0)) {
+    err << "cutter radius " << cutter_radius_mm << " mm must be > 0";
+  } else if (poses < 2) {
+    err << "poses " << poses << " must be >= 2";
+  } else if (!(std::isfinite(feed_mm_per_min) && feed_mm_per_min > 0)) {
+    err << "feed " << feed_mm_per_min << " mm/min must be > 0";
+  } else if (!std::isfinite(uv_distortion) || std::abs(uv_distortion) > 0.5) {
+    err << "uv distortion " << uv_distortion << " must be finite and within [-0.5, 0.5]";
+  } else if (!(distortion_width > 0 && distortion_width <= 1) ||
+             !(distortion_center >= 0 && distortion_center <= 1)) {
+    err << "distortion centre " << distortion_center << " and width " << distortion_width
+        << " must lie in [0, 1] and (0, 1]";
+  } else if (!(std::isfinite(axis_noise_deg) && axis_noise_deg >= 0 && axis_noise_deg < 45)) {
+    err << "axis noise " << axis_noise_deg << " deg must be in [0, 45)";
+  } else if (!(std::isfinite(flute_length_mm) && flute_length_mm >= 0)) {
+    err << "flute length " << flute_length_mm << " mm must be >= 0";
+  } else {
+    return true;
+  }
+  if (why != nullptr) *why = err.str();
+  return false;
+}
+
+double UvDistortion(const FlankPathOptions& o, double u) {
+  const double x = (u - o.distortion_center) / o.distortion_width;
+  if (std::abs(x) >= 0.5) return 0.0;
+  const double c = std::cos(M_PI * x);
+  return o.uv_distortion * c * c;
+}
+
+Status GenerateFlankPath(const RuledSurface& surface, const FlankPathOptions& o,
+                         ToolPath* path) {
+  CHECK(path != nullptr);
+  std::string why;
+  if (!o.IsValid(&why)) return Status::Error("generate: " + why);
+  const double r = o.cutter_radius_mm;
+  std::mt19937 rng(o.noise_seed);
+  ToolPath out;
+  double longest_ruling_mm = 0.0;
+  for (int i = 0; i < o.poses; ++i) {
+    const double u = static_cast<double>(i) / (o.poses - 1);
+    const double u2 = std::clamp(u + UvDistortion(o, u), 0.0, 1.0);
+    const auto c1 = surface.rail(0).Evaluate(u, 1);
+    const auto c2 = surface.rail(1).Evaluate(u2, 1);
+    const Eigen::Vector3d ruling = c2[0] - c1[0];
+    longest_ruling_mm = std::max(longest_ruling_mm, ruling.norm());
+    Eigen::Vector3d n1, n2;
+    // The CAM's normals come from its own (possibly distorted) pairing.
+    if (!RulingNormal(surface, c1[1], ruling, &n1) || !RulingNormal(surface, c2[1], ruling, &n2)) {
+      std::ostringstream err;
+      err << surface.name() << ": the surface normal vanishes at u = " << u;
+      return Status::Error(err.str());
+    }
+    ToolPose pose;
+    pose.feed_mm_per_min = o.feed_mm_per_min;
+    pose.p_w_tip = c1[0] + r * n1;
+    if (o.strategy == FlankStrategy::kSinglePointOffset) {
+      pose.a_w = ruling.normalized();
+    } else {
+      pose.a_w = (c2[0] + r * n2 - pose.p_w_tip).normalized();
+    }
+    if (o.axis_noise_deg > 0) pose.a_w = Perturb(pose.a_w, o.axis_noise_deg * M_PI / 180, &rng);
+    out.poses.push_back(pose);
+  }
+  Cutter cutter;
+  cutter.radius_mm = r;
+  cutter.flute_length_mm = o.flute_length_mm > 0 ? o.flute_length_mm : 1.25 * longest_ruling_mm;
+  out.cutter = cutter;
+  std::ostringstream title;
+  title << "tpopt generate: " << surface.name() << ", "
+        << (o.strategy == FlankStrategy::kSinglePointOffset ? "SPO" : "DPO") << ", R " << r
+        << " mm, " << o.poses << " poses, uv distortion " << o.uv_distortion << ", axis noise "
+        << o.axis_noise_deg << " deg (seed " << o.noise_seed << ")";
+  out.title = title.str();
+  *path = std::move(out);
+  return Status::Ok();
+}
+
+}  // namespace tpopt

@@ -1,0 +1,36 @@
+// Everything the report says about one path: swept-cutter deviation from
+// the surface (when there is one) and the motion on the machine.
+#ifndef TPOPT_MODEL_PATH_METRICS_H_
+#define TPOPT_MODEL_PATH_METRICS_H_
+
+#include <optional>
+#include <string>
+
+#include "model/axis_metrics.h"
+#include "model/cutter.h"
+#include "model/deviation.h"
+#include "model/machine.h"
+#include "model/ruled_surface.h"
+#include "model/status.h"
+#include "model/tool_path.h"
+
+namespace tpopt {
+
+struct PathMetrics {
+  std::optional<DeviationReport> deviation;  // absent without a surface
+  MotionReport motion;
+  int poses = 0;
+  // Notes worth a user's attention (e.g. a pass near the A = 0 pole).
+  std::string warning;
+};
+
+// Evaluates `path` on `machine` and, when `surface` is non-null, its
+// deviation with `cutter`. Fails (naming the pose) when the path does not
+// fit the machine's A travel or has a bad axis.
+Status EvaluatePath(const ToolPath& path, const Machine& machine, const RuledSurface* surface,
+                    const Cutter& cutter, const DeviationOptions& deviation_options,
+                    const MotionOptions& motion_options, PathMetrics* metrics);
+
+}  // namespace tpopt
+
+#endif  // TPOPT_MODEL_PATH_METRICS_H_
