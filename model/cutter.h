@@ -33,20 +33,21 @@ struct Cutter {
   }
 };
 
-// Signed distance (mm) from point q to the solid cutter placed at `tip` with
-// unit `axis`, all in one frame: negative inside the cutter (the tool would
-// remove q), positive outside. Exact for the cylinder; for a taper, the
-// flank part is the exact distance to the cone line in the axial plane and
-// the caps are exact, which is what flank deviation needs. Templated on the
-// scalar so that Ceres residuals can differentiate through it.
+// Signed distance (mm) from point q to the cutter placed at `tip` with unit
+// `axis`, all in one frame, as the deviation of a wall point: within the
+// flute's height range (0 <= t <= flute length) it is the distance to the
+// flank measured normal to it, negative inside the cutter (the depth of a
+// gouge in the wall at q's height, even next to the end face); beyond the
+// flute it is the exact, positive distance to the cutter's solid. Exact for
+// the cylinder; for a taper the flank distance is taken in the axial plane.
+// Templated on the scalar so that Ceres residuals can differentiate through
+// it.
 template <typename T>
 T SignedDistanceToCutter(const Cutter& cutter,
                          const Eigen::Matrix<T, 3, 1>& q,
                          const Eigen::Matrix<T, 3, 1>& tip,
                          const Eigen::Matrix<T, 3, 1>& axis) {
   using std::abs;
-  using std::max;
-  using std::min;
   using std::sqrt;
   const Eigen::Matrix<T, 3, 1> d = q - tip;
   const T t = d.dot(axis);                            // height above the tip
@@ -60,10 +61,8 @@ T SignedDistanceToCutter(const Cutter& cutter,
   // to the nearer cap.
   const T radial = (r - (T(cutter.radius_mm) + t * tan_taper)) * cos_taper;
   const T axial = abs(t - half_length) - half_length;
-  if (radial <= T(0.0) || axial <= T(0.0)) {
-    if (radial <= T(0.0) && axial <= T(0.0)) return max(radial, axial);
-    return radial > T(0.0) ? radial : axial;
-  }
+  if (axial <= T(0.0)) return radial;
+  if (radial <= T(0.0)) return axial;
   return T(sqrt(radial * radial + axial * axial));
 }
 

@@ -27,6 +27,9 @@ Status ParseFile(const std::string& path, json* out) {
     const long line = 1 + std::count(s.begin(), s.begin() + byte, '\n');
     return Status::Error(path + ":" + std::to_string(line) + ": malformed JSON (" + e.what() +
                          ")");
+  } catch (const json::exception& e) {
+    // E.g. a number too large for a double: nlohmann reports no position.
+    return Status::Error(path + ": unreadable JSON (" + e.what() + ")");
   }
   if (!out->is_object()) return Status::Error(path + ": the top level must be a JSON object");
   return Status::Ok();

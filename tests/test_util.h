@@ -2,6 +2,11 @@
 #ifndef TPOPT_TESTS_TEST_UTIL_H_
 #define TPOPT_TESTS_TEST_UTIL_H_
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +42,42 @@ inline std::string SourcePath(const std::string& relative) {
 
 // Absolute path of the built tpopt program.
 inline std::string TpoptBinary() { return TPOPT_BINARY; }
+
+// Result of running a shell command: exit code and merged stdout+stderr.
+struct CommandResult {
+  int exit_code = -1;
+  std::string output;
+};
+
+// Runs `command` through /bin/sh, capturing stdout and stderr.
+inline CommandResult RunCommand(const std::string& command) {
+  CommandResult result;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[4096];
+  size_t n;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0) result.output.append(buffer, n);
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+// A fresh temporary folder, removed with its contents on destruction.
+class TempDir {
+ public:
+  TempDir() {
+    char pattern[] = "/tmp/tpopt_test_XXXXXX";
+    path_ = mkdtemp(pattern);
+  }
+  ~TempDir() { std::system(("rm -rf '" + path_ + "'").c_str()); }
+  const std::string& path() const { return path_; }
+  std::string File(const std::string& name) const { return path_ + "/" + name; }
+
+ private:
+  std::string path_;
+};
+
+inline bool FileExists(const std::string& path) { return access(path.c_str(), F_OK) == 0; }
 
 }  // namespace tpopt::testing
 

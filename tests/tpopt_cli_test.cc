@@ -1,0 +1,123 @@
+// The tpopt command end to end: flags, exit codes, messages, outputs.
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/test_util.h"
+
+namespace tpopt {
+namespace {
+
+using testing::FileExists;
+using testing::RunCommand;
+using testing::SourcePath;
+using testing::TempDir;
+
+std::string Tpopt(const std::string& args) { return testing::TpoptBinary() + " " + args; }
+
+const std::string kBlade = SourcePath("data/surfaces/impeller_blade.json");
+const std::string kSim = SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+
+nlohmann::json ReadJson(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+TEST(TpoptCliTest, GenerateThenEvaluateWritesASaneReport) {
+  TempDir dir;
+  const std::string cls = dir.File("p.cls"), report = dir.File("r.json");
+  auto r = RunCommand(Tpopt("generate --surface=" + kBlade +
+                     " --cutter_radius=4 --poses=300 --strategy=spo --uv_distortion=0.03 --out=" +
+                     cls));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = RunCommand(Tpopt("evaluate --in=" + cls + " --surface=" + kBlade + " --machine=" + kSim +
+                " --report=" + report));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("300 poses"), std::string::npos) << r.output;
+  const nlohmann::json j = ReadJson(report);
+  for (const char* key : {"max_overcut_mm", "max_undercut_mm", "rms_deviation_mm",
+                          "limit_violations", "machining_time_s", "solve_time_s", "iterations",
+                          "poses_in", "poses_out"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  for (const char* axis : {"A", "C", "X", "Y", "Z"}) {
+    for (const char* key : {"peak_velocity", "peak_acceleration", "peak_jerk"}) {
+      ASSERT_TRUE(j[axis].contains(key)) << axis << " " << key;
+      EXPECT_GE(j[axis][key].get<double>(), 0.0);
+    }
+  }
+  EXPECT_EQ(j["poses_in"], 300);
+  // The distorted CAM path gouges and leaves material, at sub-mm scale.
+  EXPECT_GT(j["max_overcut_mm"].get<double>(), 0.01);
+  EXPECT_LT(j["max_overcut_mm"].get<double>(), 1.0);
+  EXPECT_GT(j["machining_time_s"].get<double>(), 1.0);
+}
+
+TEST(TpoptCliTest, FlagfilePresetsAndUsageErrors) {
+  TempDir dir;
+  std::ofstream(dir.File("gen.flags")) << "# preset\n--cutter_radius=4\n--poses=20\n--strategy=dpo\n";
+  auto r = RunCommand(Tpopt("generate --flagfile=" + dir.File("gen.flags") + " --surface=" + kBlade +
+                     " --out=" + dir.File("d.cls")));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("20 poses"), std::string::npos) << r.output;
+
+  r = RunCommand(Tpopt("generate --surface=" + kBlade + " --cutter_radius=4 --bogus=1 --out=x.cls"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("unknown flag --bogus"), std::string::npos) << r.output;
+  r = RunCommand(Tpopt("generate --poses=many"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("bad value 'many' for --poses"), std::string::npos) << r.output;
+  std::ofstream(dir.File("bad.flags")) << "--poses=20\n--poses=x\n";
+  r = RunCommand(Tpopt("generate --flagfile=" + dir.File("bad.flags")));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("bad.flags:2: bad value 'x'"), std::string::npos) << r.output;
+  r = RunCommand(Tpopt("frobnicate"));
+  EXPECT_EQ(r.exit_code, 2);
+  r = RunCommand(Tpopt("generate --surface=" + kBlade + " --cutter_radius=4 --strategy=xyz --out=" +
+                dir.File("x.cls")));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_FALSE(FileExists(dir.File("x.cls")));
+}
+
+TEST(TpoptCliTest, BadInputExitsOneNamingTheFileAndWritesNothing) {
+  TempDir dir;
+  const std::string report = dir.File("r.json");
+  struct Case {
+    std::string file_text;
+    std::string expected;
+  };
+  const Case cases[] = {
+      {"GOTO/1,2,3\nGOTO/1,2\n", "bad.cls:2: GOTO needs 3 or 6 numbers"},
+      {"GOTO/1,2,3,0,0,0\n", "bad.cls:1: zero-length tool axis"},
+      {"GOTO/1,2,NaN\n", "bad.cls:1: GOTO argument 3 'NaN'"},
+      {"UNITS/MM\n", "bad.cls: no GOTO"},
+      // Axis at 80 deg from +Z with C = 0: beyond the sim's A travel [-100, 50]
+      // on the positive branch; the negative branch's -80 fits, so tilt to 110.
+      {"CUTTER/8\nGOTO/0,0,0,0,-0.9396926,-0.3420201\nGOTO/1,0,0\n", "A = "},
+  };
+  for (const Case& c : cases) {
+    std::ofstream(dir.File("bad.cls")) << c.file_text;
+    const auto r = RunCommand(Tpopt("evaluate --in=" + dir.File("bad.cls") + " --machine=" + kSim +
+                             " --cutter_radius=4 --report=" + report));
+    EXPECT_EQ(r.exit_code, 1) << c.file_text << r.output;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << r.output;
+    EXPECT_FALSE(FileExists(report)) << c.file_text;
+  }
+  auto r = RunCommand(Tpopt("evaluate --in=" + dir.File("missing.cls") + " --report=" + report));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("missing.cls: cannot open"), std::string::npos) << r.output;
+  std::ofstream(dir.File("ok.cls")) << "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\n";
+  std::ofstream(dir.File("broken.json")) << "{\"kinematics\": ";
+  r = RunCommand(Tpopt("evaluate --in=" + dir.File("ok.cls") + " --machine=" + dir.File("broken.json") +
+                " --report=" + report));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("broken.json:1: malformed JSON"), std::string::npos) << r.output;
+  r = RunCommand(Tpopt("evaluate --in=" + dir.File("ok.cls") + " --report=" + dir.File("no/dir/r.json")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("no/dir/r.json"), std::string::npos) << r.output;
+  EXPECT_FALSE(FileExists(report));
+}
+
+}  // namespace
+}  // namespace tpopt
