@@ -1,0 +1,147 @@
+#include "solver/smoothing_spline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+namespace tpopt {
+namespace {
+
+Status CheckInputs(const std::vector<double>& s, const std::vector<double>& y,
+                   const std::vector<double>& w, double smoothing) {
+  std::ostringstream err;
+  if (s.size() < 2 || s.size() != y.size() || (!w.empty() && w.size() != s.size())) {
+    err << "smoothing spline: need >= 2 points and matching sizes (s " << s.size() << ", y "
+        << y.size() << ", w " << w.size() << ")";
+    return Status::Error(err.str());
+  }
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (!std::isfinite(s[i]) || !std::isfinite(y[i]) || (i > 0 && !(s[i] > s[i - 1]))) {
+      err << "smoothing spline: point " << i << " (s " << s[i] << ", y " << y[i]
+          << ") is not finite or s does not increase";
+      return Status::Error(err.str());
+    }
+    if (!w.empty() && !(w[i] > 0)) {
+      err << "smoothing spline: weight " << i << " = " << w[i] << " must be > 0";
+      return Status::Error(err.str());
+    }
+  }
+  if (!(smoothing >= 0) || !std::isfinite(smoothing)) {
+    err << "smoothing spline: smoothing " << smoothing << " must be >= 0";
+    return Status::Error(err.str());
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<double>& y,
+                            const std::vector<double>& weights, double smoothing,
+                            SmoothingSpline* out) {
+  Status st = CheckInputs(s, y, weights, smoothing);
+  if (!st.ok()) return st;
+  const int n = static_cast<int>(s.size());
+  std::vector<double> h(n - 1);
+  for (int i = 0; i + 1 < n; ++i) h[i] = s[i + 1] - s[i];
+  const double mean_h = (s.back() - s.front()) / (n - 1);
+  const double lambda = smoothing * mean_h * mean_h * mean_h;
+  out->s_ = s;
+  out->smoothing_ = smoothing;
+  out->gamma_.assign(n, 0.0);
+  if (n == 2) {
+    out->f_ = y;
+    return Status::Ok();
+  }
+  // Q (n x m) and R (m x m), m = n - 2 interior knots; column j of Q is
+  // knot j + 1.
+  const int m = n - 2;
+  std::vector<Eigen::Triplet<double>> q_triplets, r_triplets;
+  for (int j = 0; j < m; ++j) {
+    q_triplets.emplace_back(j, j, 1.0 / h[j]);
+    q_triplets.emplace_back(j + 1, j, -1.0 / h[j] - 1.0 / h[j + 1]);
+    q_triplets.emplace_back(j + 2, j, 1.0 / h[j + 1]);
+    r_triplets.emplace_back(j, j, (h[j] + h[j + 1]) / 3.0);
+    if (j + 1 < m) {
+      r_triplets.emplace_back(j, j + 1, h[j + 1] / 6.0);
+      r_triplets.emplace_back(j + 1, j, h[j + 1] / 6.0);
+    }
+  }
+  Eigen::SparseMatrix<double> q(n, m), r(m, m);
+  q.setFromTriplets(q_triplets.begin(), q_triplets.end());
+  r.setFromTriplets(r_triplets.begin(), r_triplets.end());
+  Eigen::VectorXd w_inv(n);
+  for (int i = 0; i < n; ++i) w_inv[i] = weights.empty() ? 1.0 : 1.0 / weights[i];
+  const Eigen::Map<const Eigen::VectorXd> y_vec(y.data(), n);
+  const Eigen::SparseMatrix<double> system =
+      r + lambda * Eigen::SparseMatrix<double>(q.transpose() * w_inv.asDiagonal() * q);
+  // Banded and positive definite: a natural-ordered LDLT stays O(n).
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower,
+                        Eigen::NaturalOrdering<int>> solver(system);
+  if (solver.info() != Eigen::Success) {
+    return Status::Error("smoothing spline: the banded system is singular");
+  }
+  const Eigen::VectorXd gamma = solver.solve(q.transpose() * y_vec);
+  const Eigen::VectorXd f = y_vec - lambda * (w_inv.asDiagonal() * (q * gamma));
+  out->f_.assign(f.data(), f.data() + n);
+  for (int j = 0; j < m; ++j) out->gamma_[j + 1] = gamma[j];
+  return Status::Ok();
+}
+
+Status SmoothingSpline::FitWithinTolerance(const std::vector<double>& s,
+                                           const std::vector<double>& y,
+                                           const std::vector<double>& weights, double tolerance,
+                                           SmoothingSpline* out) {
+  auto within = [&](const SmoothingSpline& fit) {
+    for (size_t i = 0; i < y.size(); ++i) {
+      if ((weights.empty() || weights[i] >= 1.0) && std::abs(fit.f_[i] - y[i]) > tolerance) {
+        return false;
+      }
+    }
+    return true;
+  };
+  // Bisection on log10(smoothing) in [-6, 8].
+  double lo = -6.0, hi = 8.0;
+  SmoothingSpline best;
+  Status st = Fit(s, y, weights, 0.0, &best);
+  if (!st.ok()) return st;
+  for (int iter = 0; iter < 30; ++iter) {
+    const double mid = 0.5 * (lo + hi);
+    SmoothingSpline trial;
+    st = Fit(s, y, weights, std::pow(10.0, mid), &trial);
+    if (!st.ok()) return st;
+    if (within(trial)) {
+      best = std::move(trial);
+      lo = mid;
+    } else {
+      hi = mid;
+    }
+  }
+  *out = std::move(best);
+  return Status::Ok();
+}
+
+std::array<double, 4> SmoothingSpline::Evaluate(double x) const {
+  const int n = static_cast<int>(s_.size());
+  // Interval i with s_i <= x < s_i+1, clamped to the ends.
+  int i = static_cast<int>(std::upper_bound(s_.begin(), s_.end(), x) - s_.begin()) - 1;
+  i = std::clamp(i, 0, n - 2);
+  const double h = s_[i + 1] - s_[i];
+  const double t = x - s_[i];
+  const double g0 = gamma_[i], g1 = gamma_[i + 1];
+  const double b = (f_[i + 1] - f_[i]) / h - h * (2 * g0 + g1) / 6.0;
+  if (x < s_.front() || x > s_.back()) {
+    // Natural spline: linear beyond the ends (gamma = 0 there).
+    const bool before = x < s_.front();
+    const double x0 = before ? s_.front() : s_.back();
+    const auto at_end = Evaluate(x0);
+    return {at_end[0] + at_end[1] * (x - x0), at_end[1], 0.0, 0.0};
+  }
+  const double c = g0 / 2.0, d = (g1 - g0) / (6.0 * h);
+  return {f_[i] + t * (b + t * (c + t * d)), b + t * (2 * c + 3 * d * t), 2 * c + 6 * d * t,
+          6 * d};
+}
+
+}  // namespace tpopt
