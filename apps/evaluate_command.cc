@@ -5,6 +5,7 @@
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
 #include "apps/inputs.h"
+#include "apps/options_from_flags.h"
 #include "apps/report.h"
 #include "model/json_io.h"
 
@@ -14,32 +15,17 @@ int RunEvaluate(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
   if (s.ok()) s = Require(FLAGS_report, "report");
   DeviationOptions deviation_options;
-  deviation_options.samples_u = FLAGS_samples_u;
-  deviation_options.samples_v = FLAGS_samples_v;
   MotionOptions motion_options;
-  motion_options.default_feed_mm_per_min = FLAGS_feed;
-  std::string why;
-  if (s.ok() && !deviation_options.IsValid(&why)) s = Status::Error(why);
-  if (s.ok() && !motion_options.IsValid(&why)) s = Status::Error(why);
+  if (s.ok()) s = MetricOptionsFromFlags(&deviation_options, &motion_options);
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
     return kExitUsage;
   }
-  ToolPath path;
-  RuledSurface surface;
-  Machine machine;
-  Cutter cutter;
+  Job job;
   PathMetrics metrics;
-  const bool has_surface = !FLAGS_surface.empty();
-  s = LoadToolPath(FLAGS_in, FLAGS_quiet, &path);
-  if (s.ok() && has_surface) s = ReadSurfaceJson(FLAGS_surface, &surface);
-  if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
+  s = LoadJob(FLAGS_quiet, &job);
   if (s.ok()) {
-    s = ResolveCutter(path, has_surface ? &surface : nullptr, FLAGS_cutter_radius,
-                      FLAGS_flute_length, &cutter);
-  }
-  if (s.ok()) {
-    s = EvaluatePath(path, machine, has_surface ? &surface : nullptr, cutter, deviation_options,
+    s = EvaluatePath(job.path, job.machine, job.surface_or_null(), job.cutter, deviation_options,
                      motion_options, &metrics);
     if (!s.ok()) s = Status::Error(FLAGS_in + ": " + s.message());
   }
@@ -52,8 +38,9 @@ int RunEvaluate(const Invocation& invocation) {
   report["command"] = invocation.command_line;
   report["input_file"] = FLAGS_in;
   report["surface"] = FLAGS_surface;
-  report["machine"] = machine.name;
-  report["cutter"] = {{"radius_mm", cutter.radius_mm}, {"flute_length_mm", cutter.flute_length_mm}};
+  report["machine"] = job.machine.name;
+  report["cutter"] = {{"radius_mm", job.cutter.radius_mm},
+                      {"flute_length_mm", job.cutter.flute_length_mm}};
   report["poses_in"] = metrics.poses;
   report["poses_out"] = metrics.poses;
   report["solve_time_s"] = 0.0;

@@ -2,7 +2,7 @@
 
 DEFINE_string(surface, "", "Ruled surface JSON (DESIGN.md format).");
 DEFINE_string(machine, "", "Machine JSON (xyzac-trt kinematics and axis limits).");
-DEFINE_string(in, "", "Input tool path: APT CL (.cls, .apt).");
+DEFINE_string(in, "", "Input tool path: APT CL (.cls, .apt, .cl).");
 DEFINE_string(out, "", "Output tool path; written whole or not at all.");
 DEFINE_string(report, "", "Report JSON to write (metrics of the input and output).");
 DEFINE_bool(quiet, false, "No progress or summary on stderr.");
@@ -26,3 +26,28 @@ DEFINE_double(feed, 1000.0, "Programmed feed, mm/min (generate; default where a 
 
 DEFINE_int32(samples_u, 200, "Deviation grid: samples along u.");
 DEFINE_int32(samples_v, 21, "Deviation grid: samples along each ruling (v).");
+
+DEFINE_string(mode, "high_accuracy",
+              "smooth: spline (the seed's plain cubic-spline method, fast) or high_accuracy "
+              "(Ceres least squares started from the spline result).");
+DEFINE_double(tolerance_mm, 0.01, "high_accuracy: deviation unit of the cost, mm.");
+DEFINE_double(overcut_factor, 3.0, "high_accuracy: weight of overcut relative to undercut (>= 1).");
+DEFINE_double(w_deviation, 1.0, "high_accuracy: weight of the swept-cutter deviation.");
+DEFINE_double(w_second, 1e3,
+              "high_accuracy: weight of d2(A,C)/ds2, mm^4/rad^2 (solver/smoothness_cost.h).");
+DEFINE_double(w_third, 1e4, "high_accuracy: weight of d3(A,C)/ds3, mm^6/rad^2.");
+DEFINE_double(w_tip_second, 1e-2, "high_accuracy: weight of the tip's d2p/ds2, mm^2.");
+DEFINE_double(w_tip_third, 0.0, "high_accuracy: weight of the tip's d3p/ds3, mm^4.");
+DEFINE_double(w_limits, 1e4, "high_accuracy: weight of axis velocity/acceleration/jerk excess.");
+DEFINE_double(limit_margin, 0.95, "high_accuracy: limit penalties start at this fraction.");
+DEFINE_double(w_tip_height, 1.0, "high_accuracy: weight holding the tip at its contact rail.");
+DEFINE_int32(ruling_samples, 7, "high_accuracy: deviation samples along each ruling.");
+DEFINE_int32(between_samples, 1, "high_accuracy: deviation checks inside each move.");
+DEFINE_int32(max_iterations, 100, "high_accuracy: Ceres iteration limit.");
+DEFINE_int32(num_threads, 1, "high_accuracy: Ceres threads.");
+DEFINE_double(angle_tolerance_deg, 0.5,
+              "spline: largest A/C change outside the abrupt zones, deg (sets the smoothing).");
+DEFINE_double(zone_factor, 8.0,
+              "spline: a zone is where |d2A/ds2|, |d2C/ds2| or |dK/ds| exceeds this x median.");
+DEFINE_int32(zone_padding, 3, "spline: poses added on each side of a zone.");
+DEFINE_bool(insert_transitions, false, "spline: insert a transition pose in every zone move.");

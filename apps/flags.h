@@ -30,4 +30,26 @@ DECLARE_double(feed);
 DECLARE_int32(samples_u);
 DECLARE_int32(samples_v);
 
+
+
+// smooth
+DECLARE_string(mode);
+DECLARE_double(tolerance_mm);
+DECLARE_double(overcut_factor);
+DECLARE_double(w_deviation);
+DECLARE_double(w_second);
+DECLARE_double(w_third);
+DECLARE_double(w_tip_second);
+DECLARE_double(w_tip_third);
+DECLARE_double(w_limits);
+DECLARE_double(limit_margin);
+DECLARE_double(w_tip_height);
+DECLARE_int32(ruling_samples);
+DECLARE_int32(between_samples);
+DECLARE_int32(max_iterations);
+DECLARE_int32(num_threads);
+DECLARE_double(angle_tolerance_deg);
+DECLARE_double(zone_factor);
+DECLARE_int32(zone_padding);
+DECLARE_bool(insert_transitions);
 #endif  // TPOPT_APPS_FLAGS_H_

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "apps/flags.h"
 #include "model/apt_io.h"
 #include "model/json_io.h"
 
@@ -69,6 +70,19 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
   if (!s.ok()) return s;
   *cutter = c;
   return Status::Ok();
+}
+
+Status LoadJob(bool quiet, Job* job) {
+  job->has_surface = !FLAGS_surface.empty();
+  Status s = LoadToolPath(FLAGS_in, quiet, &job->path);
+  if (s.ok() && job->has_surface) s = ReadSurfaceJson(FLAGS_surface, &job->surface);
+  if (s.ok()) s = LoadMachine(FLAGS_machine, &job->machine);
+  if (s.ok()) {
+    s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius, FLAGS_flute_length,
+                      &job->cutter);
+    if (!s.ok()) s = Status::Error(FLAGS_in + ": " + s.message());
+  }
+  return s;
 }
 
 Status Require(const std::string& value, const std::string& flag) {

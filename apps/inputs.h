@@ -27,6 +27,20 @@ Status LoadMachine(const std::string& path, Machine* machine);
 Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
                      double flute_flag_mm, Cutter* cutter);
 
+// Everything a subcommand reads, loaded from --in, --surface, --machine,
+// --cutter_radius and --flute_length.
+struct Job {
+  ToolPath path;
+  RuledSurface surface;
+  bool has_surface = false;
+  Machine machine;
+  Cutter cutter;
+  const RuledSurface* surface_or_null() const { return has_surface ? &surface : nullptr; }
+};
+
+// Loads a Job from the flags; errors name the file at fault.
+Status LoadJob(bool quiet, Job* job);
+
 // Fails (usage) when a required flag is empty.
 Status Require(const std::string& value, const std::string& flag);
 

@@ -58,9 +58,19 @@ std::array<double, kCount> Window(const std::vector<double>& v, size_t first) {
   return out;
 }
 
-std::vector<Eigen::Vector3d> RulingPoints(const RuledSurface& surface, double u, int samples) {
-  std::vector<Eigen::Vector3d> points(samples);
-  for (int k = 0; k < samples; ++k) points[k] = surface.Point(u, k / (samples - 1.0));
+// Contact points on the ruling at u and guard points on the rulings at
+// u + g * du for each guard offset g.
+DeviationCost::Points RulingPoints(const RuledSurface& surface, double u, double du, int samples) {
+  static constexpr double kGuardOffsets[] = {-2.0, -1.0, 1.0, 2.0};
+  DeviationCost::Points points;
+  for (int k = 0; k < samples; ++k) {
+    const double v = k / (samples - 1.0);
+    points.contact_w.push_back(surface.Point(u, v));
+    for (double g : kGuardOffsets) {
+      const double ug = u + g * du;
+      if (ug >= 0.0 && ug <= 1.0) points.guard_w.push_back(surface.Point(ug, v));
+    }
+  }
   return points;
 }
 
@@ -120,9 +130,12 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
     const double ahead = forward_cut ? state->s_mm[i + 1] - state->s_mm[i] : 0;
     // The pose stands for 1/parts of each neighbouring move.
     const double h_pose = (back + ahead) / (2.0 * parts);
+    // Guard rulings one and two contact steps away.
+    const double du = std::abs(state->u[std::min(i + 1, n - 1)] - state->u[i > 0 ? i - 1 : 0]) /
+                      ((i > 0 && i + 1 < n) ? 2.0 : 1.0);
     std::vector<ceres::ResidualBlockId>& ids = state->families["deviation"];
     ids.push_back(problem->AddResidualBlock(
-        DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], m), settings,
+        DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], du, m), settings,
                                     std::sqrt(o.w_deviation * h_pose / (length_mm * m))),
         nullptr, state->poses[i].data()));
     if (!forward_cut) continue;
@@ -131,8 +144,8 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
       const double u = (1 - lambda) * state->u[i] + lambda * state->u[i + 1];
       const double scale = std::sqrt(o.w_deviation * ahead / parts / (length_mm * m));
       ids.push_back(problem->AddResidualBlock(
-          DeviationCost::CreateBetweenPoses(RulingPoints(*in.surface, u, m), settings, scale,
-                                            lambda),
+          DeviationCost::CreateBetweenPoses(RulingPoints(*in.surface, u, du / parts, m),
+                                            settings, scale, lambda),
           nullptr, state->poses[i].data(), state->poses[i + 1].data()));
     }
   }

@@ -1,16 +1,24 @@
 // Deviation of the swept cutter from the ruled surface.
 //
 // For a pose (or a point of the joint-space move between two poses) and the
-// surface points q_k = r(u, v_k) of the ruling it is tied to, the residual
-// is the signed distance from q_k to the cutter's flank, in units of the
-// tolerance, with overcut (negative distance: the tool is inside the
-// material) weighted by `overcut_factor`:
+// surface points q_k = r(u, v_k) of the ruling it is tied to (its contact
+// points), the residual is the signed distance from q_k to the cutter's
+// flank, in units of the tolerance, with overcut (negative distance: the
+// tool is inside the material) weighted by `overcut_factor`:
 //   d_k = SignedDistanceToFlank(q_k, p_w_tip, a_w)              [mm]
 //   r_k = sqrt(w h / (L n)) * d_k / tol * (d_k < 0 ? overcut_factor : 1)
 // with n sample points per ruling, h the arc-length step the ruling stands
 // for and L the path length, so that the cost approximates
 //   E = w (1/L) integral mean_k (d_k / tol)^2 ds,
 // dimensionless, independent of point density; w is dimensionless.
+//
+// A cylinder can hold a whole ruling on its surface and still cross the
+// surface there, gouging the neighbouring rulings, because on a
+// non-developable surface the normal turns along the ruling. So each pose
+// also has guard points on nearby rulings, which may lie anywhere outside
+// the cutter (the swept envelope takes the minimum over time, so a guard
+// point's own pose measures its undercut) but not inside it:
+//   r_g = sqrt(w h / (L n)) * min(d_g, 0) / tol * overcut_factor.
 //
 // Between poses the controller interpolates its joints linearly, so the pose
 // at fraction lambda of the move i -> i+1 is J = (1 - lambda) J_i + lambda
@@ -39,10 +47,16 @@ class DeviationCost {
     double overcut_factor = 3.0;
   };
 
-  // points_w: the ruling's sample points in W; scale = sqrt(w h / (L n)).
-  DeviationCost(std::vector<Eigen::Vector3d> points_w, const Settings& settings, double scale,
-                double lambda = 0.0)
-      : points_w_(std::move(points_w)), settings_(settings), scale_(scale), lambda_(lambda) {}
+  // The sample points in W: contact points (on the pose's own ruling) and
+  // guard points (on neighbouring rulings).
+  struct Points {
+    std::vector<Eigen::Vector3d> contact_w, guard_w;
+    int size() const { return static_cast<int>(contact_w.size() + guard_w.size()); }
+  };
+
+  // scale = sqrt(w h / (L n)); lambda: fraction of the move (two-pose form).
+  DeviationCost(Points points, const Settings& settings, double scale, double lambda = 0.0)
+      : points_(std::move(points)), settings_(settings), scale_(scale), lambda_(lambda) {}
 
   template <typename T>
   bool operator()(const T* const pose, T* r) const {
@@ -62,34 +76,37 @@ class DeviationCost {
   }
 
   // Residuals for one pose.
-  static ceres::CostFunction* CreateAtPose(std::vector<Eigen::Vector3d> points_w,
-                                           const Settings& settings, double scale) {
-    const int n = static_cast<int>(points_w.size());
+  static ceres::CostFunction* CreateAtPose(Points points, const Settings& settings,
+                                           double scale) {
+    const int n = points.size();
     return new ceres::AutoDiffCostFunction<DeviationCost, ceres::DYNAMIC, kPoseSize>(
-        new DeviationCost(std::move(points_w), settings, scale), n);
+        new DeviationCost(std::move(points), settings, scale), n);
   }
 
   // Residuals at fraction lambda of the joint-space move between two poses.
-  static ceres::CostFunction* CreateBetweenPoses(std::vector<Eigen::Vector3d> points_w,
-                                                 const Settings& settings, double scale,
-                                                 double lambda) {
-    const int n = static_cast<int>(points_w.size());
+  static ceres::CostFunction* CreateBetweenPoses(Points points, const Settings& settings,
+                                                 double scale, double lambda) {
+    const int n = points.size();
     return new ceres::AutoDiffCostFunction<DeviationCost, ceres::DYNAMIC, kPoseSize, kPoseSize>(
-        new DeviationCost(std::move(points_w), settings, scale, lambda), n);
+        new DeviationCost(std::move(points), settings, scale, lambda), n);
   }
 
  private:
   template <typename T>
   void Residuals(const Eigen::Matrix<T, 3, 1>& tip, const Eigen::Matrix<T, 3, 1>& axis,
                  T* r) const {
-    for (size_t k = 0; k < points_w_.size(); ++k) {
-      const T d = SignedDistanceToFlank<T>(settings_.cutter, points_w_[k].cast<T>(), tip, axis);
-      const double factor = d < T(0.0) ? settings_.overcut_factor : 1.0;
-      r[k] = T(scale_ * factor / settings_.tolerance_mm) * d;
+    const double unit = scale_ / settings_.tolerance_mm;
+    for (const Eigen::Vector3d& q : points_.contact_w) {
+      const T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis);
+      *r++ = T(unit * (d < T(0.0) ? settings_.overcut_factor : 1.0)) * d;
+    }
+    for (const Eigen::Vector3d& q : points_.guard_w) {
+      const T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis);
+      *r++ = d < T(0.0) ? T(unit * settings_.overcut_factor) * d : T(0.0);
     }
   }
 
-  std::vector<Eigen::Vector3d> points_w_;
+  Points points_;
   Settings settings_;
   double scale_;
   double lambda_;

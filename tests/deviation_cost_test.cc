@@ -21,15 +21,20 @@ DeviationCost::Settings Settings() {
 TEST(DeviationCostTest, ResidualIsTheFlankDistanceInTolerances) {
   // Vertical tool at the origin; points at radii 4.02 (undercut 0.02) and
   // 3.99 (overcut 0.01, weighted x3).
-  const std::vector<Eigen::Vector3d> points = {{4.02, 0, 5}, {0, -3.99, 12}};
+  // Guard points count only when inside the cutter.
+  DeviationCost::Points points;
+  points.contact_w = {{4.02, 0, 5}, {0, -3.99, 12}};
+  points.guard_w = {{4.5, 0, 5}, {-3.9, 0, 8}};
   std::unique_ptr<ceres::CostFunction> cost(
       DeviationCost::CreateAtPose(points, Settings(), /*scale=*/1.0));
   std::array<double, 5> pose = {0, 0, 0, 0, 0};  // A = C = 0: axis +Z
   const double* params[] = {pose.data()};
-  double r[2];
+  double r[4];
   ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
   EXPECT_NEAR(r[0], 2.0, 1e-9);
   EXPECT_NEAR(r[1], -3.0, 1e-9);
+  EXPECT_EQ(r[2], 0.0);
+  EXPECT_NEAR(r[3], -30.0, 1e-9);
 }
 
 TEST(DeviationCostTest, MidMoveUsesJointSpaceInterpolation) {
@@ -47,7 +52,8 @@ TEST(DeviationCostTest, MidMoveUsesJointSpaceInterpolation) {
   ASSERT_GT((mid_tip - tip).norm(), 0.1);  // the premise: W interpolation would differ
   // A point 4.5 mm from the mid-move axis, 10 mm up it: undercut 0.5 mm.
   const Eigen::Vector3d radial = mid_axis.cross(Eigen::Vector3d::UnitZ()).normalized();
-  const std::vector<Eigen::Vector3d> points = {mid_tip + 10 * mid_axis + 4.5 * radial};
+  DeviationCost::Points points;
+  points.contact_w = {mid_tip + 10 * mid_axis + 4.5 * radial};
   std::unique_ptr<ceres::CostFunction> cost(
       DeviationCost::CreateBetweenPoses(points, Settings(), 1.0, 0.5));
   const double* params[] = {p0.data(), p1.data()};
@@ -57,7 +63,9 @@ TEST(DeviationCostTest, MidMoveUsesJointSpaceInterpolation) {
 }
 
 TEST(DeviationCostTest, JacobiansMatchNumericDifferences) {
-  const std::vector<Eigen::Vector3d> points = {{4.5, 0.3, 2}, {3.2, -1, 9}, {-2, 4.4, 15}};
+  DeviationCost::Points points;
+  points.contact_w = {{4.5, 0.3, 2}, {3.2, -1, 9}};
+  points.guard_w = {{-2, 4.4, 15}, {1, 4.1, 3}};
   std::array<double, 5> p0 = {0.2, 0.4, 0.1, -0.2, 0.05}, p1 = {0.25, 0.5, 0.3, 0.1, 0.0};
   testing::ExpectJacobiansMatchNumeric(DeviationCost::CreateAtPose(points, Settings(), 0.7),
                                        {p0.data()});

@@ -1,0 +1,43 @@
+#include "apps/options_from_flags.h"
+
+#include "apps/flags.h"
+
+namespace tpopt {
+
+Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion) {
+  deviation->samples_u = FLAGS_samples_u;
+  deviation->samples_v = FLAGS_samples_v;
+  motion->default_feed_mm_per_min = FLAGS_feed;
+  std::string why;
+  if (!deviation->IsValid(&why) || !motion->IsValid(&why)) return Status::Error(why);
+  return Status::Ok();
+}
+
+Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptions* ha) {
+  spline->angle_tolerance_deg = FLAGS_angle_tolerance_deg;
+  spline->zone_factor = FLAGS_zone_factor;
+  spline->zone_padding = FLAGS_zone_padding;
+  spline->insert_transitions = FLAGS_insert_transitions;
+  ha->tolerance_mm = FLAGS_tolerance_mm;
+  ha->overcut_factor = FLAGS_overcut_factor;
+  ha->w_deviation = FLAGS_w_deviation;
+  ha->w_second = FLAGS_w_second;
+  ha->w_third = FLAGS_w_third;
+  ha->w_tip_second = FLAGS_w_tip_second;
+  ha->w_tip_third = FLAGS_w_tip_third;
+  ha->w_limits = FLAGS_w_limits;
+  ha->limit_margin = FLAGS_limit_margin;
+  ha->w_tip_height = FLAGS_w_tip_height;
+  ha->ruling_samples = FLAGS_ruling_samples;
+  ha->between_samples = FLAGS_between_samples;
+  ha->max_iterations = FLAGS_max_iterations;
+  ha->num_threads = FLAGS_num_threads;
+  ha->default_feed_mm_per_min = FLAGS_feed;
+  ha->progress = !FLAGS_quiet;
+  std::string why;
+  if (!spline->IsValid(&why)) return Status::Error(why);
+  if (!ha->IsValid(&why)) return Status::Error(why);
+  return Status::Ok();
+}
+
+}  // namespace tpopt

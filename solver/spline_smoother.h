@@ -1,0 +1,64 @@
+// The seed's plain method (000 paper, section 3), the `--mode=spline` output
+// and the initial guess of the high-accuracy mode:
+//  1. unwrap A and C along the path (Machine::AssignJoints);
+//  2. find the zones of abrupt rotary acceleration — |d2A/ds2| or |d2C/ds2|
+//     above `zone_factor` times its median over the path — and, with a
+//     surface, of fast Gaussian-curvature change (|dK/ds| above
+//     `zone_factor` times its median), padded by `zone_padding` poses;
+//  3. fit cubic smoothing splines A(s), C(s) over the tip's arc length s,
+//     with the zone poses down-weighted so the spline passes over their
+//     jumps instead of through them, and the smoothing as strong as the
+//     angle tolerance allows at the other poses;
+//  4. move every pose's A, C onto the fitted curves (inside zones this is the
+//     seed's "modify the CL points"; outside, noise within the tolerance is
+//     smoothed away too) — or, with `insert_transitions`, also add a pose
+//     from the fitted functions midway along every move inside a zone;
+//  5. recompute each tip so the cutter stays tangent at its contact point:
+//     tip = C1(u_i) + R unit(n - (n.a) a), with u_i the contact ruling of the
+//     input pose and n the surface normal there (without a surface the tip
+//     stays).
+// Rapids and the poses next to them are never changed.
+#ifndef TPOPT_SOLVER_SPLINE_SMOOTHER_H_
+#define TPOPT_SOLVER_SPLINE_SMOOTHER_H_
+
+#include <string>
+
+#include "model/cutter.h"
+#include "model/machine.h"
+#include "model/ruled_surface.h"
+#include "model/status.h"
+#include "model/tool_path.h"
+
+namespace tpopt {
+
+struct SplineSmootherOptions {
+  // Zone threshold as a multiple of the path's median |second derivative|.
+  double zone_factor = 8.0;
+  // Poses added on each side of a zone.
+  int zone_padding = 3;
+  // Largest change of A or C allowed at poses outside the zones, degrees.
+  // > 0. It sets the smoothing strength.
+  double angle_tolerance_deg = 0.5;
+  // Weight of zone poses in the fit relative to 1 outside; (0, 1].
+  double zone_weight = 1e-4;
+  // Insert a pose at the middle of every move inside a zone.
+  bool insert_transitions = false;
+
+  bool IsValid(std::string* why) const;
+};
+
+struct SplineSmootherReport {
+  int zones = 0;
+  int poses_in_zones = 0;
+  int poses_inserted = 0;
+  double max_angle_change_deg = 0.0;  // largest |dA| or |dC| applied
+};
+
+// `surface` may be null (no tangency rebuild, no curvature zones).
+Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const RuledSurface* surface,
+                         const Cutter& cutter, const SplineSmootherOptions& options,
+                         ToolPath* out, SplineSmootherReport* report);
+
+}  // namespace tpopt
+
+#endif  // TPOPT_SOLVER_SPLINE_SMOOTHER_H_
