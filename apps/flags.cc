@@ -38,7 +38,7 @@ DEFINE_double(w_second, 1e3,
 DEFINE_double(w_third, 1e4, "high_accuracy: weight of d3(A,C)/ds3, mm^6/rad^2.");
 DEFINE_double(w_tip_second, 1e-2, "high_accuracy: weight of the tip's d2p/ds2, mm^2.");
 DEFINE_double(w_tip_third, 0.0, "high_accuracy: weight of the tip's d3p/ds3, mm^4.");
-DEFINE_double(w_limits, 1e4, "high_accuracy: weight of axis velocity/acceleration/jerk excess.");
+DEFINE_double(w_limits, 0.0, "high_accuracy: weight of axis velocity/acceleration/jerk excess.");
 DEFINE_double(limit_margin, 0.95, "high_accuracy: limit penalties start at this fraction.");
 DEFINE_double(w_tip_height, 1.0, "high_accuracy: weight holding the tip at its contact rail.");
 DEFINE_int32(ruling_samples, 7, "high_accuracy: deviation samples along each ruling.");
@@ -51,3 +51,6 @@ DEFINE_double(zone_factor, 8.0,
               "spline: a zone is where |d2A/ds2|, |d2C/ds2| or |dK/ds| exceeds this x median.");
 DEFINE_int32(zone_padding, 3, "spline: poses added on each side of a zone.");
 DEFINE_bool(insert_transitions, false, "spline: insert a transition pose in every zone move.");
+DEFINE_bool(schedule_feed, true,
+            "smooth: lower the feed move by move where an axis would still exceed its velocity, "
+            "acceleration or jerk limit (solver/feed_scheduler.h).");

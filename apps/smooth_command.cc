@@ -10,6 +10,7 @@
 #include "apps/options_from_flags.h"
 #include "apps/report.h"
 #include "model/apt_io.h"
+#include "solver/feed_scheduler.h"
 
 namespace tpopt {
 namespace {
@@ -84,15 +85,27 @@ int RunSmooth(const Invocation& invocation) {
                                           "); nothing written");
     }
   }
-  s = evaluate(out_path, &out_metrics);
+  PathMetrics unscheduled_metrics;
+  s = evaluate(out_path, &unscheduled_metrics);
   if (!s.ok()) {
     return Fail(kExitSolverFailure, "the smoothed path does not fit the machine (" +
                                         s.message() + "); nothing written");
   }
-  if (FLAGS_mode == "high_accuracy" && WorseThan(out_metrics, guess_metrics)) {
+  if (FLAGS_mode == "high_accuracy" && WorseThan(unscheduled_metrics, guess_metrics)) {
     return Fail(kExitSolverFailure,
                 "the optimised path is worse than its spline starting point on deviation and "
                 "limits; nothing written (try other weights)");
+  }
+  FeedScheduleReport feed_report;
+  out_metrics = unscheduled_metrics;
+  if (FLAGS_schedule_feed) {
+    FeedScheduleOptions feed_options;
+    feed_options.default_feed_mm_per_min = FLAGS_feed;
+    std::vector<JointVector> joints;
+    s = job.machine.AssignJoints(out_path, &joints);
+    if (s.ok()) s = ScheduleFeed(job.machine, joints, feed_options, &out_path, &feed_report);
+    if (s.ok()) s = evaluate(out_path, &out_metrics);
+    if (!s.ok()) return Fail(kExitSolverFailure, "feed scheduling failed: " + s.message());
   }
   out_path.title = "tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in;
   s = WriteApt(FLAGS_out, out_path);
@@ -111,6 +124,12 @@ int RunSmooth(const Invocation& invocation) {
                         {"poses_in_zones", spline_report.poses_in_zones},
                         {"poses_inserted", spline_report.poses_inserted},
                         {"max_angle_change_deg", spline_report.max_angle_change_deg}};
+    report["output_at_input_feed"] = MetricsJson(unscheduled_metrics);
+    report["feed_schedule"] = {{"enabled", FLAGS_schedule_feed},
+                               {"passes", feed_report.passes},
+                               {"moves_slowed", feed_report.moves_slowed},
+                               {"min_feed_mm_per_min", feed_report.min_feed_mm_per_min},
+                               {"violations_left", feed_report.violations_left}};
     report["iterations"] = ha_report.iterations;
     report["solve_time_s"] = ha_report.solve_time_s;
     if (FLAGS_mode == "high_accuracy") {

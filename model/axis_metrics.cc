@@ -67,10 +67,41 @@ double SegmentTime(const Machine& machine, const ToolPath& path,
   return rotary_deg / speed;
 }
 
+MotionSamples ComputeMotionSamples(const Machine& machine, const ToolPath& path,
+                                   const std::vector<JointVector>& joints,
+                                   double default_feed_mm_per_min) {
+  CHECK_EQ(joints.size(), path.poses.size());
+  MotionSamples m;
+  const size_t n = joints.size();
+  const size_t segments = n > 0 ? n - 1 : 0;
+  m.dt_s.assign(segments, 0.0);
+  m.ds_mm.assign(segments, 0.0);
+  m.cutting.assign(segments, false);
+  m.velocity.assign(segments, JointVector::Zero());
+  m.has_acceleration.assign(n, false);
+  m.acceleration.assign(n, JointVector::Zero());
+  m.has_jerk.assign(n, false);
+  m.jerk.assign(n, JointVector::Zero());
+  for (size_t i = 0; i < segments; ++i) {
+    m.dt_s[i] = SegmentTime(machine, path, joints, i, default_feed_mm_per_min);
+    m.ds_mm[i] = (path.poses[i + 1].p_w_tip - path.poses[i].p_w_tip).norm();
+    m.cutting[i] = !path.poses[i + 1].rapid && m.dt_s[i] > 0;
+    if (m.cutting[i]) m.velocity[i] = (joints[i + 1] - joints[i]) / m.dt_s[i];
+  }
+  for (size_t i = 1; i < segments; ++i) {
+    if (!m.cutting[i] || !m.cutting[i - 1]) continue;
+    m.has_acceleration[i] = true;
+    m.acceleration[i] = (m.velocity[i] - m.velocity[i - 1]) / (0.5 * (m.dt_s[i] + m.dt_s[i - 1]));
+    if (!m.has_acceleration[i - 1]) continue;
+    m.has_jerk[i] = true;
+    m.jerk[i] = (m.acceleration[i] - m.acceleration[i - 1]) / m.dt_s[i - 1];
+  }
+  return m;
+}
+
 MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,
                             const std::vector<JointVector>& joints,
                             const MotionOptions& options) {
-  CHECK_EQ(joints.size(), path.poses.size());
   MotionReport report;
   double worst_excess = 0.0;
   const size_t n = joints.size();
@@ -83,61 +114,43 @@ MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,
       }
     }
   }
-  if (n < 2) return report;
-  // Segment times, lengths and velocities; feed[i] says segment i cuts.
-  std::vector<double> dt(n - 1), ds(n - 1);
-  std::vector<bool> feed(n - 1);
-  std::vector<JointVector> vel(n - 1), dj_ds(n - 1);
+  const MotionSamples m =
+      ComputeMotionSamples(machine, path, joints, options.default_feed_mm_per_min);
+  // Checks one derivative sample against its limit and keeps the peak.
+  auto check = [&](int a, int pose, double value, double limit, double* peak) {
+    *peak = std::max(*peak, std::abs(value));
+    if (Exceeds(value, limit)) {
+      Flag(a, pose, std::abs(value) / limit, &report, &worst_excess);
+    }
+  };
   for (size_t i = 0; i + 1 < n; ++i) {
-    dt[i] = SegmentTime(machine, path, joints, i, options.default_feed_mm_per_min);
-    ds[i] = (path.poses[i + 1].p_w_tip - path.poses[i].p_w_tip).norm();
-    feed[i] = !path.poses[i + 1].rapid && dt[i] > 0;
-    report.machining_time_s += dt[i];
-    if (!feed[i]) continue;
-    report.path_length_mm += ds[i];
-    vel[i] = (joints[i + 1] - joints[i]) / dt[i];
-    dj_ds[i] = ds[i] > 1e-9 ? JointVector((joints[i + 1] - joints[i]) / ds[i])
-                            : JointVector(JointVector::Zero());
+    report.machining_time_s += m.dt_s[i];
+    if (!m.cutting[i]) continue;
+    report.path_length_mm += m.ds_mm[i];
+    for (int a = 0; a < 5; ++a) {
+      check(a, static_cast<int>(i + 1), m.velocity[i][a], machine.limits[a].max_velocity,
+            &report.axes[a].peak_velocity);
+    }
   }
-  // Accelerations at the pose between segments i-1 and i.
-  std::vector<JointVector> acc(n - 1, JointVector::Zero());
-  std::vector<bool> has_acc(n - 1, false);
-  for (size_t i = 0; i + 1 < n; ++i) {
-    if (!feed[i]) continue;
+  for (size_t i = 1; i + 1 < n; ++i) {
+    if (!m.has_acceleration[i]) continue;
+    const double ds_mid = 0.5 * (m.ds_mm[i] + m.ds_mm[i - 1]);
     for (int a = 0; a < 5; ++a) {
-      report.axes[a].peak_velocity = std::max(report.axes[a].peak_velocity, std::abs(vel[i][a]));
-      if (Exceeds(vel[i][a], machine.limits[a].max_velocity)) {
-        Flag(a, static_cast<int>(i + 1), std::abs(vel[i][a]) / machine.limits[a].max_velocity,
-             &report, &worst_excess);
+      AxisMotion& axis = report.axes[a];
+      check(a, static_cast<int>(i), m.acceleration[i][a], machine.limits[a].max_acceleration,
+            &axis.peak_acceleration);
+      if (m.has_jerk[i]) {
+        check(a, static_cast<int>(i), m.jerk[i][a], machine.limits[a].max_jerk, &axis.peak_jerk);
       }
-    }
-    if (i == 0 || !feed[i - 1]) continue;
-    has_acc[i] = true;
-    acc[i] = (vel[i] - vel[i - 1]) / (0.5 * (dt[i] + dt[i - 1]));
-    const double ds_mid = 0.5 * (ds[i] + ds[i - 1]);
-    for (int a = 0; a < 5; ++a) {
-      AxisMotion& m = report.axes[a];
-      m.peak_acceleration = std::max(m.peak_acceleration, std::abs(acc[i][a]));
-      if (ds_mid > 1e-9) {
-        m.peak_second_derivative_per_mm2 = std::max(
-            m.peak_second_derivative_per_mm2, std::abs(dj_ds[i][a] - dj_ds[i - 1][a]) / ds_mid);
-      }
-      if (Exceeds(acc[i][a], machine.limits[a].max_acceleration)) {
-        Flag(a, static_cast<int>(i), std::abs(acc[i][a]) / machine.limits[a].max_acceleration,
-             &report, &worst_excess);
-      }
-    }
-    if (!has_acc[i - 1]) continue;
-    const JointVector jerk = (acc[i] - acc[i - 1]) / dt[i - 1];
-    for (int a = 0; a < 5; ++a) {
-      report.axes[a].peak_jerk = std::max(report.axes[a].peak_jerk, std::abs(jerk[a]));
-      if (Exceeds(jerk[a], machine.limits[a].max_jerk)) {
-        Flag(a, static_cast<int>(i), std::abs(jerk[a]) / machine.limits[a].max_jerk, &report,
-             &worst_excess);
+      if (ds_mid > 1e-9 && m.ds_mm[i] > 1e-9 && m.ds_mm[i - 1] > 1e-9) {
+        const double slope1 = (joints[i + 1][a] - joints[i][a]) / m.ds_mm[i];
+        const double slope0 = (joints[i][a] - joints[i - 1][a]) / m.ds_mm[i - 1];
+        axis.peak_second_derivative_per_mm2 =
+            std::max(axis.peak_second_derivative_per_mm2, std::abs(slope1 - slope0) / ds_mid);
       }
     }
   }
-  for (const AxisMotion& m : report.axes) report.limit_violations += m.limit_violations;
+  for (const AxisMotion& a : report.axes) report.limit_violations += a.limit_violations;
   return report;
 }
 

@@ -54,6 +54,23 @@ struct MotionOptions {
 
 constexpr double kDefaultRapidMmPerMin = 10000.0;
 
+// The finite-difference derivatives behind the metrics, sample by sample.
+// Segment i is the move into pose i + 1; acceleration i sits at pose i
+// (between segments i - 1 and i); jerk i spans segment i - 1.
+struct MotionSamples {
+  std::vector<double> dt_s, ds_mm;       // per segment
+  std::vector<bool> cutting;             // per segment: a feed move
+  std::vector<JointVector> velocity;     // per segment
+  std::vector<bool> has_acceleration;    // per pose
+  std::vector<JointVector> acceleration; // per pose
+  std::vector<bool> has_jerk;            // per pose
+  std::vector<JointVector> jerk;         // per pose (over segment i - 1)
+};
+
+MotionSamples ComputeMotionSamples(const Machine& machine, const ToolPath& path,
+                                   const std::vector<JointVector>& joints,
+                                   double default_feed_mm_per_min);
+
 // Metrics for `path` whose joints are `joints` (from Machine::AssignJoints,
 // one per pose). Precondition: joints.size() == path.poses.size().
 MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,

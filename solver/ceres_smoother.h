@@ -44,7 +44,7 @@ struct HighAccuracyOptions {
   double w_tip_second = 1e-2;
   double w_tip_third = 0.0;
   // Weight of the axis-limit penalties (dimensionless, one-sided).
-  double w_limits = 1e4;
+  double w_limits = 0.0;
   // The limit penalties start at this fraction of each limit. (0, 1].
   double limit_margin = 0.95;
   // Weight of the tip-height gauge (dimensionless).

@@ -1,0 +1,117 @@
+#include "solver/feed_scheduler.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <glog/logging.h>
+
+#include "model/axis_metrics.h"
+
+namespace tpopt {
+namespace {
+
+// Smallest factor (<= 1) that brings |value| within margin * limit if feed^k
+// scales it, 1 when already within the limit.
+double Factor(double value, double limit, int k, double margin) {
+  if (!std::isfinite(limit) || std::abs(value) <= limit) return 1.0;
+  return std::pow(margin * limit / std::abs(value), 1.0 / k);
+}
+
+// One pass of corrections; returns the number of violations found.
+int CorrectOnce(const Machine& machine, const MotionSamples& m, double margin,
+                std::vector<double>* scale) {
+  int violations = 0;
+  const size_t segments = m.dt_s.size();
+  auto apply = [&](size_t segment, double factor) {
+    if (factor < 1.0) (*scale)[segment] = std::min((*scale)[segment], factor);
+  };
+  for (size_t i = 0; i < segments; ++i) {
+    if (!m.cutting[i]) continue;
+    for (int a = 0; a < 5; ++a) {
+      const AxisLimits& lim = machine.limits[a];
+      const double fv = Factor(m.velocity[i][a], lim.max_velocity, 1, margin);
+      apply(i, fv);
+      // Acceleration and jerk at pose i involve segments i - 1 and i (and
+      // i - 2 for jerk).
+      double fa = m.has_acceleration[i] ? Factor(m.acceleration[i][a], lim.max_acceleration, 2,
+                                                 margin)
+                                        : 1.0;
+      double fj = m.has_jerk[i] ? Factor(m.jerk[i][a], lim.max_jerk, 3, margin) : 1.0;
+      violations += (fv < 1.0) + (fa < 1.0) + (fj < 1.0);
+      const double f = std::min(fa, fj);
+      if (f < 1.0) {
+        apply(i, f);
+        if (i >= 1) apply(i - 1, f);
+        if (fj < 1.0 && i >= 2) apply(i - 2, fj);
+      }
+    }
+  }
+  return violations;
+}
+
+}  // namespace
+
+bool FeedScheduleOptions::IsValid(std::string* why) const {
+  std::ostringstream err;
+  if (!(margin > 0 && margin < 1)) {
+    err << "feed margin " << margin << " must be in (0, 1)";
+  } else if (!(max_feed_step > 0) || !std::isfinite(max_feed_step)) {
+    err << "feed step " << max_feed_step << " must be > 0";
+  } else if (!(default_feed_mm_per_min > 0) || !std::isfinite(default_feed_mm_per_min)) {
+    err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
+  } else if (max_passes < 1) {
+    err << "feed passes " << max_passes << " must be >= 1";
+  } else {
+    return true;
+  }
+  if (why != nullptr) *why = err.str();
+  return false;
+}
+
+Status ScheduleFeed(const Machine& machine, const std::vector<JointVector>& joints,
+                    const FeedScheduleOptions& options, ToolPath* path,
+                    FeedScheduleReport* report) {
+  std::string why;
+  if (!options.IsValid(&why)) return Status::Error(why);
+  CHECK_EQ(joints.size(), path->poses.size());
+  *report = FeedScheduleReport();
+  const size_t n = path->poses.size();
+  if (n < 2) return Status::Ok();
+  std::vector<double> programmed(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double f = path->poses[i].feed_mm_per_min;
+    programmed[i] = f > 0 ? f : options.default_feed_mm_per_min;
+    path->poses[i].feed_mm_per_min = programmed[i];
+  }
+  const double step = 1.0 + options.max_feed_step;
+  for (int pass = 0; pass < options.max_passes; ++pass) {
+    const MotionSamples m =
+        ComputeMotionSamples(machine, *path, joints, options.default_feed_mm_per_min);
+    std::vector<double> scale(n - 1, 1.0);
+    report->violations_left = CorrectOnce(machine, m, options.margin, &scale);
+    report->passes = pass + 1;
+    if (report->violations_left == 0) break;
+    std::vector<double> feed(n - 1);
+    for (size_t i = 0; i + 1 < n; ++i) feed[i] = path->poses[i + 1].feed_mm_per_min * scale[i];
+    // Bound the ratio of neighbouring feed moves, forwards and backwards.
+    for (size_t i = 1; i + 1 < n; ++i) {
+      if (m.cutting[i] && m.cutting[i - 1]) feed[i] = std::min(feed[i], feed[i - 1] * step);
+    }
+    for (size_t i = n - 1; i-- > 1;) {
+      if (m.cutting[i] && m.cutting[i - 1]) feed[i - 1] = std::min(feed[i - 1], feed[i] * step);
+    }
+    for (size_t i = 0; i + 1 < n; ++i) {
+      if (m.cutting[i]) path->poses[i + 1].feed_mm_per_min = feed[i];
+    }
+  }
+  report->min_feed_mm_per_min = programmed[0];
+  for (size_t i = 1; i < n; ++i) {
+    const double f = path->poses[i].feed_mm_per_min;
+    report->moves_slowed += f < programmed[i] * (1 - 1e-9);
+    report->min_feed_mm_per_min = std::min(report->min_feed_mm_per_min, f);
+  }
+  return Status::Ok();
+}
+
+}  // namespace tpopt
