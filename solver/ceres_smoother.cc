@@ -61,7 +61,7 @@ std::array<double, kCount> Window(const std::vector<double>& v, size_t first) {
 // Contact points on the ruling at u and guard points on the rulings at
 // u + g * du for each guard offset g.
 DeviationCost::Points RulingPoints(const RuledSurface& surface, double u, double du, int samples) {
-  static constexpr double kGuardOffsets[] = {-2.0, -1.0, 1.0, 2.0};
+  static constexpr double kGuardOffsets[] = {-8.0, -4.0, -2.0, -1.0, 1.0, 2.0, 4.0, 8.0};
   DeviationCost::Points points;
   for (int k = 0; k < samples; ++k) {
     const double v = k / (samples - 1.0);
@@ -197,16 +197,21 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   state->poses.resize(n);
   state->s_mm.assign(n, 0.0);
   state->t_s.assign(n, 0.0);
+  state->u = ProjectPathOntoRail(in.surface->rail(0), path);
   for (size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d& p = guess.poses[i].p_w_tip;
     state->poses[i] = {joints[i][kA], joints[i][kC], p.x(), p.y(), p.z()};
     if (i == 0) continue;
-    const double ds = (p - guess.poses[i - 1].p_w_tip).norm();
+    // Arc length of the contact along rail 0, not of the tip: in a tight
+    // concave bend the tip hardly moves while the contact sweeps the bend,
+    // and a tip parameter would crush the deviation weight and blow up the
+    // derivatives there.
+    const double ds = (in.surface->rail(0).Point(state->u[i]) -
+                       in.surface->rail(0).Point(state->u[i - 1])).norm();
     state->s_mm[i] = state->s_mm[i - 1] + std::max(ds, kMinStep);
     const double dt = SegmentTime(*in.machine, path, joints, i - 1, o.default_feed_mm_per_min);
     state->t_s[i] = state->t_s[i - 1] + std::max(dt, kMinStep);
   }
-  state->u = ProjectPathOntoRail(in.surface->rail(0), path);
   const double length_mm = std::max(state->s_mm.back(), kMinStep);
   const std::vector<bool> free_pose = FreePoses(path);
   for (size_t i = 0; i < n; ++i) {

@@ -9,8 +9,9 @@
 //   second      solver/smoothness_cost.h    d2/ds2 of A, C and the tip
 //   third       solver/smoothness_cost.h    d3/ds3 of A, C and the tip
 //   limits      solver/axis_limit_cost.h    axis velocity/acceleration/jerk
-// Every family is scaled as an integral over arc length divided by the path
-// length, so a weight means the same at any point density.
+// Every family is scaled as an integral over the arc length s of the contact
+// curve (rail 0 at u_i) divided by its length, so a weight means the same at
+// any point density.
 #ifndef TPOPT_SOLVER_CERES_SMOOTHER_H_
 #define TPOPT_SOLVER_CERES_SMOOTHER_H_
 
@@ -80,7 +81,7 @@ struct SmoothingInputs {
 struct SmoothingState {
   std::vector<std::array<double, 5>> poses;  // [A, C, x, y, z] per pose
   std::vector<double> u;                     // contact ruling per pose
-  std::vector<double> s_mm;                  // arc length of the initial guess
+  std::vector<double> s_mm;                  // arc length of the contact on rail 0
   std::vector<double> t_s;                   // planned time at programmed feed
   // Residual blocks of each family, for per-family cost reports.
   std::map<std::string, std::vector<ceres::ResidualBlockId>> families;

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include "model/json_io.h"
+#include "model/path_generator.h"
+#include "tests/test_util.h"
+
 namespace tpopt {
 namespace {
 
@@ -42,6 +46,29 @@ TEST(RailProjectionTest, PathProjectionIsMonotoneEvenWithLargeSteps) {
   const std::vector<double> u = ProjectPathOntoRail(c, path);
   for (size_t i = 0; i < u.size(); ++i) EXPECT_NEAR(u[i], i / 8.0, 0.02) << i;
   for (size_t i = 1; i < u.size(); ++i) EXPECT_GT(u[i], u[i - 1]);
+}
+
+}  // namespace
+}  // namespace tpopt
+
+namespace tpopt {
+namespace {
+
+TEST(RailProjectionTest, TipsNearTheCentreOfCurvatureKeepTheirRuling) {
+  // Near u = 0.1 the bottom rail of the shared jcde2022 surface bends with a
+  // radius of 4.13 mm, so the tips of a 4 mm cutter sit almost at its centre
+  // of curvature, where the foot point is ill-conditioned (its slope is
+  // |C'|^2 (1 - 4 / 4.13)); the search must still find the exact ruling. The
+  // SPO path is generated at u = i / 299.
+  RuledSurface surface;
+  ASSERT_TRUE(
+      ReadSurfaceJson(testing::SourcePath("data/surfaces/jcde2022.json"), &surface).ok());
+  ASSERT_NEAR(surface.RailCurvatureRadius(0, 0.0973), 4.13, 0.01);
+  FlankPathOptions options;
+  ToolPath path;
+  ASSERT_TRUE(GenerateFlankPath(surface, options, &path).ok());
+  const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), path);
+  for (size_t i = 0; i < u.size(); ++i) EXPECT_NEAR(u[i], i / 299.0, 1e-6) << i;
 }
 
 }  // namespace
