@@ -15,20 +15,6 @@
 namespace tpopt {
 namespace {
 
-double WorstDeviationMm(const PathMetrics& m) {
-  return m.deviation ? std::max(m.deviation->max_overcut_mm, m.deviation->max_undercut_mm) : 0.0;
-}
-
-// The optimiser's result is refused when it is worse than its starting
-// point on deviation or limits and better on neither.
-bool WorseThan(const PathMetrics& out, const PathMetrics& start) {
-  const double dev_out = WorstDeviationMm(out), dev_start = WorstDeviationMm(start);
-  const int viol_out = out.motion.limit_violations, viol_start = start.motion.limit_violations;
-  const bool worse = dev_out > dev_start * (1 + 1e-6) + 1e-9 || viol_out > viol_start;
-  const bool better = dev_out < dev_start * (1 - 1e-6) || viol_out < viol_start;
-  return worse && !better;
-}
-
 int Fail(int code, const std::string& message) {
   std::fprintf(stderr, "tpopt smooth: %s\n", message.c_str());
   return code;
@@ -91,7 +77,7 @@ int RunSmooth(const Invocation& invocation) {
     return Fail(kExitSolverFailure, "the smoothed path does not fit the machine (" +
                                         s.message() + "); nothing written");
   }
-  if (FLAGS_mode == "high_accuracy" && WorseThan(unscheduled_metrics, guess_metrics)) {
+  if (FLAGS_mode == "high_accuracy" && IsWorseThan(unscheduled_metrics, guess_metrics)) {
     return Fail(kExitSolverFailure,
                 "the optimised path is worse than its spline starting point on deviation and "
                 "limits; nothing written (try other weights)");

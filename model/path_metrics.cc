@@ -1,5 +1,7 @@
 #include "model/path_metrics.h"
 
+#include <algorithm>
+
 #include <glog/logging.h>
 
 namespace tpopt {
@@ -22,6 +24,19 @@ Status EvaluatePath(const ToolPath& path, const Machine& machine, const RuledSur
   }
   *metrics = std::move(out);
   return Status::Ok();
+}
+
+double WorstDeviationMm(const PathMetrics& m) {
+  return m.deviation ? std::max(m.deviation->max_overcut_mm, m.deviation->max_undercut_mm) : 0.0;
+}
+
+bool IsWorseThan(const PathMetrics& candidate, const PathMetrics& reference) {
+  const double dev = WorstDeviationMm(candidate), dev_ref = WorstDeviationMm(reference);
+  const int viol = candidate.motion.limit_violations;
+  const int viol_ref = reference.motion.limit_violations;
+  const bool worse = dev > dev_ref * (1 + 1e-6) + 1e-9 || viol > viol_ref;
+  const bool better = dev < dev_ref * (1 - 1e-6) || viol < viol_ref;
+  return worse && !better;
 }
 
 }  // namespace tpopt

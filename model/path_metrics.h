@@ -31,6 +31,14 @@ Status EvaluatePath(const ToolPath& path, const Machine& machine, const RuledSur
                     const Cutter& cutter, const DeviationOptions& deviation_options,
                     const MotionOptions& motion_options, PathMetrics* metrics);
 
+// Larger of the max overcut and max undercut, mm; 0 without a surface.
+double WorstDeviationMm(const PathMetrics& metrics);
+
+// True when `candidate` is worse than `reference` on deviation or on limit
+// violations and better on neither: a smoother must not hand back such a
+// path in place of its starting point.
+bool IsWorseThan(const PathMetrics& candidate, const PathMetrics& reference);
+
 }  // namespace tpopt
 
 #endif  // TPOPT_MODEL_PATH_METRICS_H_

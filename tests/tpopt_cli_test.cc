@@ -121,3 +121,61 @@ TEST(TpoptCliTest, BadInputExitsOneNamingTheFileAndWritesNothing) {
 
 }  // namespace
 }  // namespace tpopt
+
+namespace tpopt {
+namespace {
+
+TEST(TpoptCliTest, SmoothWritesPathAndSideBySideReport) {
+  TempDir dir;
+  const std::string cam = dir.File("cam.cls");
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + kBlade +
+                             " --cutter_radius=4 --poses=120 --uv_distortion=0.03 "
+                             "--axis_noise_deg=0.3 --out=" + cam))
+                .exit_code,
+            0);
+  for (const std::string preset : {"impeller_high_accuracy", "fast_spline"}) {
+    const std::string out = dir.File(preset + ".cls"), report = dir.File(preset + ".json");
+    const auto r = RunCommand(Tpopt("smooth --flagfile=" + SourcePath("data/presets/" + preset +
+                                                                       ".flags") +
+                                    " --in=" + cam + " --out=" + out + " --surface=" + kBlade +
+                                    " --machine=" + kSim + " --report=" + report));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json j = ReadJson(report);
+    ASSERT_TRUE(j.contains("input") && j.contains("output")) << preset;
+    EXPECT_EQ(j["poses_in"], 120);
+    EXPECT_EQ(j["poses_out"], 120);
+    // Feed scheduling leaves no violation; the distorted input had many.
+    EXPECT_GT(j["input"]["limit_violations"].get<int>(), 0);
+    EXPECT_EQ(j["output"]["limit_violations"].get<int>(), 0) << preset;
+    EXPECT_LT(j["output"]["C"]["peak_acceleration"].get<double>(),
+              j["input"]["C"]["peak_acceleration"].get<double>());
+    if (preset == "impeller_high_accuracy") {
+      EXPECT_LT(j["output"]["max_overcut_mm"].get<double>(), 0.02);
+      EXPECT_GT(j["iterations"].get<int>(), 0);
+      EXPECT_NE(r.output.find("high_accuracy iter"), std::string::npos);  // progress
+    }
+    EXPECT_TRUE(FileExists(out));
+  }
+}
+
+TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
+  TempDir dir;
+  const std::string out = dir.File("out.cls");
+  std::ofstream(dir.File("p.cls")) << "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\nGOTO/3,0,0\n";
+  auto r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
+                            " --mode=high_accuracy"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("needs --surface"), std::string::npos) << r.output;
+  r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out + " --mode=fancy"));
+  EXPECT_EQ(r.exit_code, 2);
+  r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
+                       " --mode=spline --tolerance_mm=-1"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("tolerance -1"), std::string::npos) << r.output;
+  r = RunCommand(Tpopt("smooth --in=" + dir.File("nope.cls") + " --out=" + out + " --mode=spline"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_FALSE(FileExists(out));
+}
+
+}  // namespace
+}  // namespace tpopt

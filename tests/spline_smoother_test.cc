@@ -1,0 +1,119 @@
+#include "solver/spline_smoother.h"
+
+#include <gtest/gtest.h>
+
+#include "model/axis_metrics.h"
+#include "model/json_io.h"
+#include "model/path_generator.h"
+#include "tests/test_util.h"
+
+namespace tpopt {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+struct Fixture {
+  RuledSurface surface;
+  Machine machine;
+  ToolPath clean, spiked;
+};
+
+Fixture Make() {
+  Fixture f;
+  EXPECT_TRUE(
+      ReadSurfaceJson(testing::SourcePath("data/surfaces/impeller_blade.json"), &f.surface).ok());
+  EXPECT_TRUE(ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &f.machine)
+                  .ok());
+  EXPECT_TRUE(GenerateFlankPath(f.surface, FlankPathOptions(), &f.clean).ok());
+  f.spiked = f.clean;
+  // One injected spike: three poses tilted by 3 deg about the path tangent.
+  for (int i = 150; i <= 152; ++i) {
+    ToolPose& p = f.spiked.poses[i];
+    const Eigen::Vector3d tangent = (f.clean.poses[i + 1].p_w_tip - p.p_w_tip).normalized();
+    p.a_w = Eigen::AngleAxisd(3 * kDeg, tangent) * p.a_w;
+  }
+  return f;
+}
+
+MotionReport Motion(const Fixture& f, const ToolPath& path) {
+  std::vector<JointVector> joints;
+  EXPECT_TRUE(f.machine.AssignJoints(path, &joints).ok());
+  return EvaluateMotion(f.machine, path, joints, MotionOptions());
+}
+
+TEST(SplineSmootherTest, RemovesAnInjectedSpike) {
+  const Fixture f = Make();
+  ToolPath out;
+  SplineSmootherReport report;
+  ASSERT_TRUE(SmoothWithSplines(f.spiked, f.machine, &f.surface, *f.clean.cutter,
+                                SplineSmootherOptions(), &out, &report)
+                  .ok());
+  EXPECT_GE(report.zones, 1);
+  const MotionReport clean = Motion(f, f.clean), spiked = Motion(f, f.spiked),
+                     smooth = Motion(f, out);
+  for (int axis : {kA, kC}) {
+    const double c = clean.axes[axis].peak_second_derivative_per_mm2;
+    EXPECT_GT(spiked.axes[axis].peak_second_derivative_per_mm2, 10 * c) << axis;
+    EXPECT_LT(smooth.axes[axis].peak_second_derivative_per_mm2, 2 * c) << axis;
+  }
+}
+
+TEST(SplineSmootherTest, KeepsTangencyAtTheContactAndStaysNearTheInputOutsideZones) {
+  const Fixture f = Make();
+  ToolPath out;
+  SplineSmootherReport report;
+  SplineSmootherOptions options;
+  ASSERT_TRUE(
+      SmoothWithSplines(f.spiked, f.machine, &f.surface, *f.clean.cutter, options, &out, &report)
+          .ok());
+  ASSERT_EQ(out.poses.size(), f.spiked.poses.size());
+  for (size_t i = 0; i < out.poses.size(); ++i) {
+    const double u = i / 299.0;
+    // The axis line passes at R from the contact point C1(u).
+    const Eigen::Vector3d d = f.surface.rail(0).Point(u) - out.poses[i].p_w_tip;
+    const double radial = (d - d.dot(out.poses[i].a_w) * out.poses[i].a_w).norm();
+    EXPECT_NEAR(radial, 4.0, 1e-6) << i;
+    if (i < 130 || i > 172) {
+      const double moved = std::acos(std::min(1.0, out.poses[i].a_w.dot(f.spiked.poses[i].a_w)));
+      // |dA| and |dC| <= tolerance bounds the axis change by their sum.
+      EXPECT_LT(moved, 2 * options.angle_tolerance_deg * kDeg) << i;
+    }
+  }
+}
+
+TEST(SplineSmootherTest, IsDeterministicAndLeavesRapidsAlone) {
+  Fixture f = Make();
+  f.spiked.poses[0].rapid = true;
+  f.spiked.poses[0].p_w_tip += Eigen::Vector3d(0, 0, 50);
+  ToolPath a, b;
+  SplineSmootherReport report;
+  ASSERT_TRUE(SmoothWithSplines(f.spiked, f.machine, &f.surface, *f.clean.cutter,
+                                SplineSmootherOptions(), &a, &report)
+                  .ok());
+  ASSERT_TRUE(SmoothWithSplines(f.spiked, f.machine, &f.surface, *f.clean.cutter,
+                                SplineSmootherOptions(), &b, &report)
+                  .ok());
+  for (size_t i = 0; i < a.poses.size(); ++i) {
+    EXPECT_EQ(a.poses[i].p_w_tip, b.poses[i].p_w_tip);
+    EXPECT_EQ(a.poses[i].a_w, b.poses[i].a_w);
+  }
+  EXPECT_EQ(a.poses[0].p_w_tip, f.spiked.poses[0].p_w_tip);
+  EXPECT_EQ(a.poses[0].a_w, f.spiked.poses[0].a_w);
+  EXPECT_TRUE(a.poses[0].rapid);
+}
+
+TEST(SplineSmootherTest, InsertsTransitionPosesInZonesWhenAsked) {
+  const Fixture f = Make();
+  ToolPath out;
+  SplineSmootherReport report;
+  SplineSmootherOptions options;
+  options.insert_transitions = true;
+  ASSERT_TRUE(
+      SmoothWithSplines(f.spiked, f.machine, &f.surface, *f.clean.cutter, options, &out, &report)
+          .ok());
+  EXPECT_GT(report.poses_inserted, 0);
+  EXPECT_EQ(out.poses.size(), f.spiked.poses.size() + report.poses_inserted);
+}
+
+}  // namespace
+}  // namespace tpopt
