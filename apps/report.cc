@@ -2,7 +2,9 @@
 
 #include <cstdio>
 
+#include "apps/commands.h"
 #include "model/atomic_file.h"
+#include "solver/smoothing_pipeline.h"
 
 namespace tpopt {
 namespace {
@@ -73,6 +75,38 @@ std::string Summary(const std::string& label, const PathMetrics& m) {
   out += buf;
   if (!m.warning.empty()) out += "  note: " + m.warning + "\n";
   return out;
+}
+
+nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string& mode,
+                                const SmoothingResult& result) {
+  nlohmann::json report = MetricsJson(result.output_metrics);
+  report["tpopt_version"] = "0.1.0";
+  report["command"] = invocation.command_line;
+  report["mode"] = mode;
+  report["input"] = MetricsJson(result.input_metrics);
+  report["output"] = MetricsJson(result.output_metrics);
+  report["output_at_input_feed"] = MetricsJson(result.output_at_input_feed);
+  report["poses_in"] = result.input_metrics.poses;
+  report["poses_out"] = result.output_metrics.poses;
+  report["spline"] = {{"zones", result.spline.zones},
+                      {"poses_in_zones", result.spline.poses_in_zones},
+                      {"poses_inserted", result.spline.poses_inserted},
+                      {"max_angle_change_deg", result.spline.max_angle_change_deg}};
+  report["feed_schedule"] = {{"passes", result.feed.passes},
+                             {"moves_slowed", result.feed.moves_slowed},
+                             {"min_feed_mm_per_min", result.feed.min_feed_mm_per_min},
+                             {"violations_left", result.feed.violations_left}};
+  const HighAccuracyReport& ha = result.high_accuracy;
+  report["iterations"] = ha.iterations;
+  report["solve_time_s"] = ha.solve_time_s;
+  if (mode == "high_accuracy") {
+    report["initial_guess"] = MetricsJson(result.initial_guess_metrics);
+    report["ceres"] = {{"message", ha.message},
+                       {"initial_cost", ha.initial_cost},
+                       {"final_cost", ha.final_cost},
+                       {"final_cost_by_family", ha.final_cost_by_family}};
+  }
+  return report;
 }
 
 Status WriteReport(const std::string& path, const nlohmann::json& report) {

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/commands.h"
 #include "model/path_metrics.h"
+#include "solver/smoothing_pipeline.h"
 #include "model/status.h"
 
 namespace tpopt {
@@ -20,6 +22,12 @@ nlohmann::json MetricsJson(const PathMetrics& metrics);
 
 // A few lines for stderr/stdout: deviation, peak A/C motion, violations.
 std::string Summary(const std::string& label, const PathMetrics& metrics);
+
+// The smooth report: the output's metrics at the top level, then `input`,
+// `output`, `output_at_input_feed`, `initial_guess` (high accuracy), and
+// the spline, Ceres and feed-schedule reports.
+nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string& mode,
+                                const SmoothingResult& result);
 
 // Writes `report` (pretty-printed) whole or not at all.
 Status WriteReport(const std::string& path, const nlohmann::json& report);

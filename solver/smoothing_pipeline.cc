@@ -1,0 +1,71 @@
+#include "solver/smoothing_pipeline.h"
+
+#include <glog/logging.h>
+
+namespace tpopt {
+namespace {
+
+Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure* failure) {
+  *failure = kind;
+  return Status::Error(message);
+}
+
+}  // namespace
+
+Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
+                    SmoothingResult* result, SmoothingFailure* failure) {
+  CHECK(job.input && job.cutter && job.machine && result && failure);
+  *failure = SmoothingFailure::kNone;
+  const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
+  if (high_accuracy && job.surface == nullptr) {
+    return Fail(SmoothingFailure::kBadInput, "high-accuracy mode needs a surface", failure);
+  }
+  auto evaluate = [&](const ToolPath& path, PathMetrics* metrics) {
+    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, settings.deviation,
+                        settings.motion, metrics);
+  };
+  Status s = evaluate(*job.input, &result->input_metrics);
+  if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+
+  SplineSmootherOptions spline_options = settings.spline;
+  // The Ceres problem keeps the input's poses one for one.
+  if (high_accuracy) spline_options.insert_transitions = false;
+  ToolPath spline_path;
+  s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
+                        &spline_path, &result->spline);
+  if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+  if (!high_accuracy) {
+    result->output = std::move(spline_path);
+  } else {
+    s = evaluate(spline_path, &result->initial_guess_metrics);
+    const SmoothingInputs inputs{job.input, &spline_path, job.surface, job.cutter, job.machine};
+    if (s.ok()) s = SmoothHighAccuracy(inputs, settings.high_accuracy, &result->output,
+                                       &result->high_accuracy);
+    if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+    if (!result->high_accuracy.converged) {
+      return Fail(SmoothingFailure::kSolver, "Ceres failed (" + result->high_accuracy.message + ")",
+                  failure);
+    }
+  }
+  s = evaluate(result->output, &result->output_at_input_feed);
+  if (!s.ok()) {
+    return Fail(SmoothingFailure::kSolver,
+                "the smoothed path does not fit the machine (" + s.message() + ")", failure);
+  }
+  if (high_accuracy && IsWorseThan(result->output_at_input_feed, result->initial_guess_metrics)) {
+    return Fail(SmoothingFailure::kSolver,
+                "the optimised path is worse than its spline starting point on deviation and "
+                "limits (try other weights)",
+                failure);
+  }
+  result->output_metrics = result->output_at_input_feed;
+  if (!settings.schedule_feed) return Status::Ok();
+  std::vector<JointVector> joints;
+  s = job.machine->AssignJoints(result->output, &joints);
+  if (s.ok()) s = ScheduleFeed(*job.machine, joints, settings.feed, &result->output, &result->feed);
+  if (s.ok()) s = evaluate(result->output, &result->output_metrics);
+  if (!s.ok()) return Fail(SmoothingFailure::kSolver, "feed scheduling: " + s.message(), failure);
+  return Status::Ok();
+}
+
+}  // namespace tpopt

@@ -1,0 +1,57 @@
+// The whole smoothing job, shared by `tpopt smooth` and the quality
+// benchmark: metrics of the input; the spline method (the output in spline
+// mode, the initial guess in high-accuracy mode); the Ceres solve; the
+// refusal of a result worse than its start; feed scheduling; metrics of the
+// output.
+#ifndef TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
+#define TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
+
+#include <string>
+
+#include "model/path_metrics.h"
+#include "solver/ceres_smoother.h"
+#include "solver/feed_scheduler.h"
+#include "solver/spline_smoother.h"
+
+namespace tpopt {
+
+enum class SmoothingMode { kSpline, kHighAccuracy };
+
+struct SmoothingJob {
+  const ToolPath* input = nullptr;
+  const RuledSurface* surface = nullptr;  // required for kHighAccuracy
+  const Cutter* cutter = nullptr;
+  const Machine* machine = nullptr;
+};
+
+struct SmoothingSettings {
+  SmoothingMode mode = SmoothingMode::kHighAccuracy;
+  SplineSmootherOptions spline;
+  HighAccuracyOptions high_accuracy;
+  bool schedule_feed = true;
+  FeedScheduleOptions feed;
+  DeviationOptions deviation;
+  MotionOptions motion;
+};
+
+struct SmoothingResult {
+  ToolPath output;
+  PathMetrics input_metrics;
+  PathMetrics initial_guess_metrics;  // high-accuracy mode only
+  PathMetrics output_at_input_feed;   // before feed scheduling
+  PathMetrics output_metrics;         // as written
+  SplineSmootherReport spline;
+  HighAccuracyReport high_accuracy;
+  FeedScheduleReport feed;
+};
+
+// What went wrong, for the caller's exit code.
+enum class SmoothingFailure { kNone, kBadInput, kSolver };
+
+// Runs the job; on failure `result->output` must not be written.
+Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
+                    SmoothingResult* result, SmoothingFailure* failure);
+
+}  // namespace tpopt
+
+#endif  // TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
