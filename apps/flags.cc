@@ -45,8 +45,11 @@ DEFINE_int32(ruling_samples, 7, "high_accuracy: deviation samples along each rul
 DEFINE_int32(between_samples, 1, "high_accuracy: deviation checks inside each move.");
 DEFINE_int32(max_iterations, 100, "high_accuracy: Ceres iteration limit.");
 DEFINE_int32(num_threads, 1, "high_accuracy: Ceres threads.");
-DEFINE_double(angle_tolerance_deg, 0.5,
-              "spline: largest A/C change outside the abrupt zones, deg (sets the smoothing).");
+DEFINE_double(angle_tolerance_deg, 0.05,
+              "spline: largest A/C change the fit may make outside the abrupt zones, deg "
+              "(sets the smoothing).");
+DEFINE_bool(smooth_outside_zones, false,
+            "spline: move every pose onto the fitted A/C curves, not only the abrupt zones.");
 DEFINE_double(zone_factor, 8.0,
               "spline: a zone is where |d2A/ds2|, |d2C/ds2| or |dK/ds| exceeds this x median.");
 DEFINE_int32(zone_padding, 3, "spline: poses added on each side of a zone.");

@@ -52,5 +52,6 @@ DECLARE_double(angle_tolerance_deg);
 DECLARE_double(zone_factor);
 DECLARE_int32(zone_padding);
 DECLARE_bool(insert_transitions);
+DECLARE_bool(smooth_outside_zones);
 DECLARE_bool(schedule_feed);
 #endif  // TPOPT_APPS_FLAGS_H_

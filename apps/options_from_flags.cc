@@ -18,6 +18,7 @@ Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptio
   spline->zone_factor = FLAGS_zone_factor;
   spline->zone_padding = FLAGS_zone_padding;
   spline->insert_transitions = FLAGS_insert_transitions;
+  spline->smooth_outside_zones = FLAGS_smooth_outside_zones;
   ha->tolerance_mm = FLAGS_tolerance_mm;
   ha->overcut_factor = FLAGS_overcut_factor;
   ha->w_deviation = FLAGS_w_deviation;

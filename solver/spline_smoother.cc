@@ -64,6 +64,43 @@ Eigen::Vector3d TangentTip(const RuledSurface& surface, double radius_mm, double
   return surface.rail(0).Point(u) + radius_mm * offset;
 }
 
+// Fitted angle with each zone's ends pinned to the untouched poses around
+// it: the fit's offset from the data at the first pose before and after a
+// zone is removed linearly across the zone, so the modified stretch joins
+// its neighbours without a step.
+class PinnedFit {
+ public:
+  PinnedFit(const SmoothingSpline& fit, const std::vector<double>& s,
+            const std::vector<double>& y, const std::vector<bool>& zone)
+      : fit_(fit), left_(s.size()), right_(s.size()) {
+    const size_t n = s.size();
+    for (size_t i = 0; i < n; ++i) {
+      if (!zone[i] || (i > 0 && zone[i - 1])) continue;
+      size_t end = i;
+      while (end + 1 < n && zone[end + 1]) ++end;
+      const size_t l = i > 0 ? i - 1 : i, r = end + 1 < n ? end + 1 : end;
+      for (size_t k = i; k <= end; ++k) {
+        left_[k] = {s[l], y[l] - fit(s[l])};
+        right_[k] = {s[r], y[r] - fit(s[r])};
+      }
+      i = end;
+    }
+  }
+
+  // Value at arc length s_mm for pose i; outside zones the pins are zero
+  // and this is the plain fit.
+  double At(size_t i, double s_mm) const {
+    const auto [s_l, d_l] = left_[i];
+    const auto [s_r, d_r] = right_[i];
+    const double t = s_r > s_l ? std::clamp((s_mm - s_l) / (s_r - s_l), 0.0, 1.0) : 0.0;
+    return fit_(s_mm) + d_l + (d_r - d_l) * t;
+  }
+
+ private:
+  const SmoothingSpline& fit_;
+  std::vector<std::pair<double, double>> left_, right_;  // (s, offset) per pose
+};
+
 }  // namespace
 
 bool SplineSmootherOptions::IsValid(std::string* why) const {
@@ -133,32 +170,33 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   auto movable = [&](size_t i) {
     return !in.poses[i].rapid && (i + 1 >= n || !in.poses[i + 1].rapid);
   };
-  auto pose_at = [&](const ToolPose& base, double s_mm, double u_contact) {
+  const PinnedFit a_pinned(a_fit, s, a, zone), c_pinned(c_fit, s, c, zone);
+  auto pose_at = [&](size_t i, const ToolPose& base, double s_mm, double u_contact) {
     ToolPose p = base;
-    p.a_w = AnglesToAxis(a_fit(s_mm), c_fit(s_mm));
+    p.a_w = AnglesToAxis(a_pinned.At(i, s_mm), c_pinned.At(i, s_mm));
     if (surface != nullptr) p.p_w_tip = TangentTip(*surface, cutter.radius_mm, u_contact, p.a_w);
     return p;
   };
   out->poses.clear();
   for (size_t i = 0; i < n; ++i) {
-    if (!movable(i)) {
+    if (!movable(i) || (!zone[i] && !options.smooth_outside_zones)) {
       out->poses.push_back(in.poses[i]);
       continue;
     }
     report->max_angle_change_deg = std::max(
-        {report->max_angle_change_deg, std::abs(a_fit.values()[i] - a[i]) * kRadToDeg,
-         std::abs(c_fit.values()[i] - c[i]) * kRadToDeg});
+        {report->max_angle_change_deg, std::abs(a_pinned.At(i, s[i]) - a[i]) * kRadToDeg,
+         std::abs(c_pinned.At(i, s[i]) - c[i]) * kRadToDeg});
     const bool insert = options.insert_transitions && i > 0 && zone[i] && zone[i - 1] &&
                         movable(i - 1);
     if (insert) {
-      ToolPose mid = pose_at(in.poses[i], 0.5 * (s[i - 1] + s[i]),
+      ToolPose mid = pose_at(i, in.poses[i], 0.5 * (s[i - 1] + s[i]),
                              surface ? 0.5 * (u[i - 1] + u[i]) : 0.0);
       if (surface == nullptr) mid.p_w_tip = 0.5 * (in.poses[i - 1].p_w_tip + in.poses[i].p_w_tip);
       mid.source_line = 0;
       out->poses.push_back(mid);
       ++report->poses_inserted;
     }
-    out->poses.push_back(pose_at(in.poses[i], s[i], surface ? u[i] : 0.0));
+    out->poses.push_back(pose_at(i, in.poses[i], s[i], surface ? u[i] : 0.0));
   }
   return Status::Ok();
 }

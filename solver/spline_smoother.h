@@ -9,10 +9,11 @@
 //     with the zone poses down-weighted so the spline passes over their
 //     jumps instead of through them, and the smoothing as strong as the
 //     angle tolerance allows at the other poses;
-//  4. move every pose's A, C onto the fitted curves (inside zones this is the
-//     seed's "modify the CL points"; outside, noise within the tolerance is
-//     smoothed away too) — or, with `insert_transitions`, also add a pose
-//     from the fitted functions midway along every move inside a zone;
+//  4. move the zone poses' A, C onto the fitted curves — the seed's "modify
+//     the CL points" — and, with `insert_transitions`, add a pose from the
+//     fitted functions midway along every move inside a zone; with
+//     `smooth_outside_zones` every pose moves onto the curves (noise within
+//     the tolerance is smoothed away too);
 //  5. recompute each tip so the cutter stays tangent at its contact point:
 //     tip = C1(u_i) + R unit(n - (n.a) a), with u_i the contact ruling of the
 //     input pose and n the surface normal there (without a surface the tip
@@ -36,9 +37,12 @@ struct SplineSmootherOptions {
   double zone_factor = 8.0;
   // Poses added on each side of a zone.
   int zone_padding = 3;
-  // Largest change of A or C allowed at poses outside the zones, degrees.
-  // > 0. It sets the smoothing strength.
-  double angle_tolerance_deg = 0.5;
+  // Largest change of A or C the fit may make at poses outside the zones,
+  // degrees. > 0. It sets the smoothing strength, and so how smoothly the
+  // fitted zones join the untouched poses around them.
+  double angle_tolerance_deg = 0.05;
+  // Move the poses outside the zones onto the fitted curves too.
+  bool smooth_outside_zones = false;
   // Weight of zone poses in the fit relative to 1 outside; (0, 1].
   double zone_weight = 1e-4;
   // Insert a pose at the middle of every move inside a zone.

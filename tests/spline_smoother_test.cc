@@ -74,11 +74,31 @@ TEST(SplineSmootherTest, KeepsTangencyAtTheContactAndStaysNearTheInputOutsideZon
     const double radial = (d - d.dot(out.poses[i].a_w) * out.poses[i].a_w).norm();
     EXPECT_NEAR(radial, 4.0, 1e-6) << i;
     if (i < 130 || i > 172) {
-      const double moved = std::acos(std::min(1.0, out.poses[i].a_w.dot(f.spiked.poses[i].a_w)));
-      // |dA| and |dC| <= tolerance bounds the axis change by their sum.
-      EXPECT_LT(moved, 2 * options.angle_tolerance_deg * kDeg) << i;
+      // Outside the zone the seed's method leaves the poses as they were.
+      EXPECT_EQ(out.poses[i].a_w, f.spiked.poses[i].a_w) << i;
     }
   }
+}
+
+TEST(SplineSmootherTest, SmoothingOutsideZonesStaysWithinTheTolerance) {
+  const Fixture f = Make();
+  ToolPath out;
+  SplineSmootherReport report;
+  SplineSmootherOptions options;
+  options.smooth_outside_zones = true;
+  options.angle_tolerance_deg = 0.5;
+  ASSERT_TRUE(
+      SmoothWithSplines(f.spiked, f.machine, &f.surface, *f.clean.cutter, options, &out, &report)
+          .ok());
+  int moved_outside = 0;
+  for (size_t i = 0; i < out.poses.size(); ++i) {
+    if (i >= 130 && i <= 172) continue;
+    const double moved = std::acos(std::min(1.0, out.poses[i].a_w.dot(f.spiked.poses[i].a_w)));
+    moved_outside += moved > 1e-9;
+    // |dA| and |dC| <= tolerance bounds the axis change by their sum.
+    EXPECT_LT(moved, 2 * options.angle_tolerance_deg * kDeg) << i;
+  }
+  EXPECT_GT(moved_outside, 100);
 }
 
 TEST(SplineSmootherTest, IsDeterministicAndLeavesRapidsAlone) {

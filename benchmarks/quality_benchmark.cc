@@ -1,0 +1,185 @@
+// The spline-vs-Ceres quality table: for every case of the suite (the three
+// shared surfaces x {clean SPO, distorted CAM path} x both shared machines)
+// run the plain spline method and the high-accuracy mode and print one
+// Markdown table; `--out=FILE.csv` also writes it as CSV.
+//
+//   ./build/benchmarks/quality_benchmark [--out=quality.csv] [--poses=300]
+//
+// Deviation is judged against a clean double-point-offset (DPO) path on the
+// same surface, the best classical offset method. Axis motion is given both
+// at the input's programmed feed (what the geometry alone demands) and as
+// written, after feed scheduling (what the machine will run).
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "model/json_io.h"
+#include "model/path_generator.h"
+#include "solver/smoothing_pipeline.h"
+
+namespace tpopt {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+struct Row {
+  std::string surface, machine, path, mode;
+  double dpo_mm = 0, overcut_mm = 0, undercut_mm = 0, rms_mm = 0;
+  double a_acc_input_feed = 0, c_acc_input_feed = 0;
+  double a_vel = 0, c_vel = 0, a_acc = 0, c_acc = 0, a_jerk = 0, c_jerk = 0;
+  int violations_input = 0, violations = 0;
+  double machining_time_s = 0, solve_time_s = 0;
+};
+
+std::string Data(const std::string& relative) {
+  return std::string(TPOPT_SOURCE_DIR) + "/data/" + relative;
+}
+
+bool Fill(const SmoothingResult& r, double wall_s, Row* row) {
+  const PathMetrics& out = r.output_metrics;
+  if (!out.deviation) return false;
+  row->overcut_mm = out.deviation->max_overcut_mm;
+  row->undercut_mm = out.deviation->max_undercut_mm;
+  row->rms_mm = out.deviation->rms_deviation_mm;
+  row->a_acc_input_feed = r.output_at_input_feed.motion.axes[kA].peak_acceleration * kRadToDeg;
+  row->c_acc_input_feed = r.output_at_input_feed.motion.axes[kC].peak_acceleration * kRadToDeg;
+  row->a_vel = out.motion.axes[kA].peak_velocity * kRadToDeg;
+  row->c_vel = out.motion.axes[kC].peak_velocity * kRadToDeg;
+  row->a_acc = out.motion.axes[kA].peak_acceleration * kRadToDeg;
+  row->c_acc = out.motion.axes[kC].peak_acceleration * kRadToDeg;
+  row->a_jerk = out.motion.axes[kA].peak_jerk * kRadToDeg;
+  row->c_jerk = out.motion.axes[kC].peak_jerk * kRadToDeg;
+  row->violations_input = r.input_metrics.motion.limit_violations;
+  row->violations = out.motion.limit_violations;
+  row->machining_time_s = out.motion.machining_time_s;
+  row->solve_time_s = wall_s;
+  return true;
+}
+
+double WorstMm(const RuledSurface& surface, const Machine& machine, const ToolPath& path) {
+  PathMetrics m;
+  if (!EvaluatePath(path, machine, &surface, *path.cutter, DeviationOptions(), MotionOptions(), &m)
+           .ok()) {
+    return -1;
+  }
+  return WorstDeviationMm(m);
+}
+
+std::vector<Row> RunSuite(int poses) {
+  std::vector<Row> rows;
+  for (const char* surface_name : {"jcde2022", "hypar", "impeller_blade"}) {
+    RuledSurface surface;
+    if (!ReadSurfaceJson(Data("surfaces/") + surface_name + ".json", &surface).ok()) continue;
+    for (const char* machine_name : {"jcde2022_ac", "linuxcnc_xyzac_trt_sim"}) {
+      Machine machine;
+      if (!ReadMachineJson(Data("machines/") + machine_name + ".json", &machine).ok()) continue;
+      FlankPathOptions g;
+      g.poses = poses;
+      g.strategy = FlankStrategy::kDoublePointOffset;
+      ToolPath dpo;
+      GenerateFlankPath(surface, g, &dpo);
+      const double dpo_mm = WorstMm(surface, machine, dpo);
+      g.strategy = FlankStrategy::kSinglePointOffset;
+      for (const bool distorted : {false, true}) {
+        g.uv_distortion = distorted ? 0.03 : 0.0;
+        g.axis_noise_deg = distorted ? 0.3 : 0.0;
+        ToolPath input;
+        GenerateFlankPath(surface, g, &input);
+        for (const SmoothingMode mode : {SmoothingMode::kSpline, SmoothingMode::kHighAccuracy}) {
+          SmoothingSettings settings;
+          settings.mode = mode;
+          settings.high_accuracy.progress = false;
+          SmoothingResult result;
+          SmoothingFailure failure;
+          const auto start = std::chrono::steady_clock::now();
+          const Status s = RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings,
+                                        &result, &failure);
+          const double wall_s =
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          Row row{surface_name, machine_name, distorted ? "CAM (uv 0.03, 0.3 deg)" : "clean SPO",
+                  mode == SmoothingMode::kSpline ? "spline" : "high_accuracy"};
+          row.dpo_mm = dpo_mm;
+          if (!s.ok() || !Fill(result, wall_s, &row)) {
+            std::fprintf(stderr, "%s %s %s: %s\n", surface_name, machine_name, row.mode.c_str(),
+                         s.message().c_str());
+            row.violations = -1;
+          }
+          rows.push_back(row);
+          std::fprintf(stderr, ".");
+        }
+      }
+    }
+  }
+  std::fprintf(stderr, "\n");
+  return rows;
+}
+
+void PrintMarkdown(const std::vector<Row>& rows) {
+  std::printf(
+      "| surface | machine | input path | mode | max overcut mm | max undercut mm | RMS mm | "
+      "max dev / DPO | A, C peak acc at input feed deg/s^2 | A, C peak vel deg/s | A, C peak acc "
+      "deg/s^2 | A, C peak jerk deg/s^3 | violations in -> out | machining time s | solve s |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Row& r : rows) {
+    std::printf(
+        "| %s | %s | %s | %s | %.4f | %.4f | %.4f | %.2f | %.1f, %.1f | %.2f, %.2f | %.1f, %.1f | "
+        "%.0f, %.0f | %d -> %d | %.1f | %.3f |\n",
+        r.surface.c_str(), r.machine.c_str(), r.path.c_str(), r.mode.c_str(), r.overcut_mm,
+        r.undercut_mm, r.rms_mm, std::max(r.overcut_mm, r.undercut_mm) / r.dpo_mm,
+        r.a_acc_input_feed, r.c_acc_input_feed, r.a_vel, r.c_vel, r.a_acc, r.c_acc, r.a_jerk,
+        r.c_jerk, r.violations_input, r.violations, r.machining_time_s, r.solve_time_s);
+  }
+}
+
+std::string Csv(const std::vector<Row>& rows) {
+  std::ostringstream out;
+  out << "surface,machine,input_path,mode,dpo_max_dev_mm,max_overcut_mm,max_undercut_mm,rms_mm,"
+         "a_acc_input_feed,c_acc_input_feed,a_vel,c_vel,a_acc,c_acc,a_jerk,c_jerk,"
+         "violations_input,violations,machining_time_s,solve_time_s\n";
+  for (const Row& r : rows) {
+    out << r.surface << ',' << r.machine << ',' << r.path << ',' << r.mode << ',' << r.dpo_mm
+        << ',' << r.overcut_mm << ',' << r.undercut_mm << ',' << r.rms_mm << ','
+        << r.a_acc_input_feed << ',' << r.c_acc_input_feed << ',' << r.a_vel << ',' << r.c_vel
+        << ',' << r.a_acc << ',' << r.c_acc << ',' << r.a_jerk << ',' << r.c_jerk << ','
+        << r.violations_input << ',' << r.violations << ',' << r.machining_time_s << ','
+        << r.solve_time_s << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace
+}  // namespace tpopt
+
+int main(int argc, char** argv) {
+  std::string out;
+  int poses = 300;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strncmp(argv[i], "--out=", 6) == 0) {
+      out = argv[i] + 6;
+    } else if (std::strncmp(argv[i], "--poses=", 8) == 0) {
+      poses = std::atoi(argv[i] + 8);
+    } else {
+      std::fprintf(stderr, "usage: quality_benchmark [--out=FILE.csv] [--poses=N]\n");
+      return 2;
+    }
+  }
+  if (poses < 4) {
+    std::fprintf(stderr, "quality_benchmark: --poses=%d must be >= 4\n", poses);
+    return 2;
+  }
+  const std::vector<tpopt::Row> rows = tpopt::RunSuite(poses);
+  tpopt::PrintMarkdown(rows);
+  if (!out.empty()) {
+    std::ofstream file(out);
+    file << tpopt::Csv(rows);
+    if (!file) {
+      std::fprintf(stderr, "quality_benchmark: cannot write %s\n", out.c_str());
+      return 1;
+    }
+  }
+  return 0;
+}
