@@ -58,17 +58,22 @@ std::array<double, kCount> Window(const std::vector<double>& v, size_t first) {
   return out;
 }
 
-// Contact points on the ruling at u and guard points on the rulings at
-// u + g * du for each guard offset g.
-DeviationCost::Points RulingPoints(const RuledSurface& surface, double u, double du, int samples) {
-  static constexpr double kGuardOffsets[] = {-8.0, -4.0, -2.0, -1.0, 1.0, 2.0, 4.0, 8.0};
+// Contact points on the ruling at u, and guard points on the rulings at
+// the given distances (mm along rail 0) either side: a cylinder that holds
+// its own ruling can still cut into rulings a millimetre or two away where
+// the surface twists, whatever the pose spacing.
+DeviationCost::Points RulingPoints(const RuledSurface& surface, double u,
+                                   const std::vector<double>& guard_mm, int samples) {
+  const double speed_mm = std::max(surface.rail(0).Evaluate(u, 1)[1].norm(), 1e-9);
   DeviationCost::Points points;
   for (int k = 0; k < samples; ++k) {
     const double v = k / (samples - 1.0);
     points.contact_w.push_back(surface.Point(u, v));
-    for (double g : kGuardOffsets) {
-      const double ug = u + g * du;
-      if (ug >= 0.0 && ug <= 1.0) points.guard_w.push_back(surface.Point(ug, v));
+    for (double d : guard_mm) {
+      for (double side : {-1.0, 1.0}) {
+        const double ug = u + side * d / speed_mm;
+        if (ug >= 0.0 && ug <= 1.0) points.guard_w.push_back(surface.Point(ug, v));
+      }
     }
   }
   return points;
@@ -130,12 +135,9 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
     const double ahead = forward_cut ? state->s_mm[i + 1] - state->s_mm[i] : 0;
     // The pose stands for 1/parts of each neighbouring move.
     const double h_pose = (back + ahead) / (2.0 * parts);
-    // Guard rulings one and two contact steps away.
-    const double du = std::abs(state->u[std::min(i + 1, n - 1)] - state->u[i > 0 ? i - 1 : 0]) /
-                      ((i > 0 && i + 1 < n) ? 2.0 : 1.0);
     std::vector<ceres::ResidualBlockId>& ids = state->families["deviation"];
     ids.push_back(problem->AddResidualBlock(
-        DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], du, m), settings,
+        DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], o.guard_distances_mm, m), settings,
                                     std::sqrt(o.w_deviation * h_pose / (length_mm * m))),
         nullptr, state->poses[i].data()));
     if (!forward_cut) continue;
@@ -144,8 +146,8 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
       const double u = (1 - lambda) * state->u[i] + lambda * state->u[i + 1];
       const double scale = std::sqrt(o.w_deviation * ahead / parts / (length_mm * m));
       ids.push_back(problem->AddResidualBlock(
-          DeviationCost::CreateBetweenPoses(RulingPoints(*in.surface, u, du / parts, m),
-                                            settings, scale, lambda),
+          DeviationCost::CreateBetweenPoses(
+              RulingPoints(*in.surface, u, o.guard_distances_mm, m), settings, scale, lambda),
           nullptr, state->poses[i].data(), state->poses[i + 1].data()));
     }
   }
@@ -166,6 +168,9 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
     err << "every weight must be finite and >= 0";
   } else if (!(limit_margin > 0 && limit_margin <= 1)) {
     err << "limit margin " << limit_margin << " must be in (0, 1]";
+  } else if (std::any_of(guard_distances_mm.begin(), guard_distances_mm.end(),
+                         [](double d) { return !(d > 0) || !std::isfinite(d); })) {
+    err << "guard distances must be > 0 mm";
   } else if (ruling_samples < 2 || between_samples < 0) {
     err << "ruling samples " << ruling_samples << " must be >= 2 and between samples "
         << between_samples << " >= 0";

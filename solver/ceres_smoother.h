@@ -52,6 +52,9 @@ struct HighAccuracyOptions {
   double w_tip_height = 1.0;
   // Sample points along each ruling for the deviation family. >= 2.
   int ruling_samples = 7;
+  // Distances (mm along rail 0) of the guard rulings on each side of a
+  // pose's own, which its cutter must not cut into (deviation_cost.h).
+  std::vector<double> guard_distances_mm = {0.3, 0.6, 1.2, 2.4};
   // Joint-space points between neighbouring poses checked for deviation
   // (0 = poses only).
   int between_samples = 1;
