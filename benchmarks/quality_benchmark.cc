@@ -122,7 +122,7 @@ void PrintMarkdown(const std::vector<Row>& rows) {
   std::printf(
       "| surface | machine | input path | mode | max overcut mm | max undercut mm | RMS mm | "
       "max dev / DPO | A, C peak acc at input feed deg/s^2 | A, C peak vel deg/s | A, C peak acc "
-      "deg/s^2 | A, C peak jerk deg/s^3 | violations in -> out | machining time s | solve s |\n");
+      "deg/s^2 | A, C peak jerk deg/s^3 | violations in -> out | machining time s | wall s |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Row& r : rows) {
     std::printf(
