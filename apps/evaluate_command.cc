@@ -4,7 +4,7 @@
 #include "apps/commands.h"
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
-#include "apps/inputs.h"
+#include "apps/job_io.h"
 #include "apps/options_from_flags.h"
 #include "apps/report.h"
 #include "model/json_io.h"

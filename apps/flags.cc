@@ -2,8 +2,18 @@
 
 DEFINE_string(surface, "", "Ruled surface JSON (DESIGN.md format).");
 DEFINE_string(machine, "", "Machine JSON (xyzac-trt kinematics and axis limits).");
-DEFINE_string(in, "", "Input tool path: APT CL (.cls, .apt, .cl).");
-DEFINE_string(out, "", "Output tool path; written whole or not at all.");
+DEFINE_string(in, "", "Input tool path: APT CL (.cls, .apt, .cl) or LinuxCNC G-code (.ngc, .nc).");
+DEFINE_string(out, "",
+              "Output tool path, APT or G-code by its extension; written whole or not at all.");
+DEFINE_string(gcode_style, "tcp",
+              "G-code: tcp (X Y Z = tool tip in the workpiece, A C joints; the controller's TCP "
+              "mode) or joint (X Y Z = machine joints by inverse kinematics). For reading, the "
+              "style at the start; M428/M429 switch it.");
+DEFINE_bool(gcode_inverse_time, false, "G-code output: G93 inverse-time feeds from the planned "
+            "segment times instead of G94 mm/min.");
+DEFINE_string(gcode_preamble, "(switch the controller to tool-centre-point mode here, e.g. M428)",
+              "G-code output: line(s) before the first move, e.g. M428 or TRAORI.");
+DEFINE_string(gcode_postamble, "", "G-code output: line(s) after the last move.");
 DEFINE_string(report, "", "Report JSON to write (metrics of the input and output).");
 DEFINE_bool(quiet, false, "No progress or summary on stderr.");
 

@@ -12,6 +12,12 @@ DECLARE_string(out);
 DECLARE_string(report);
 DECLARE_bool(quiet);
 
+// G-code (.ngc / .nc files)
+DECLARE_string(gcode_style);
+DECLARE_bool(gcode_inverse_time);
+DECLARE_string(gcode_preamble);
+DECLARE_string(gcode_postamble);
+
 // Cutter (overrides what the path file says).
 DECLARE_double(cutter_radius);
 DECLARE_double(flute_length);

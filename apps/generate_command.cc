@@ -5,8 +5,7 @@
 #include "apps/commands.h"
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
-#include "apps/inputs.h"
-#include "model/apt_io.h"
+#include "apps/job_io.h"
 #include "model/json_io.h"
 #include "model/path_generator.h"
 
@@ -40,10 +39,12 @@ int RunGenerate(const Invocation&) {
     return kExitUsage;
   }
   RuledSurface surface;
+  Machine machine;
   ToolPath path;
   s = ReadSurfaceJson(FLAGS_surface, &surface);
+  if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
   if (s.ok()) s = GenerateFlankPath(surface, options, &path);
-  if (s.ok()) s = WriteApt(FLAGS_out, path);
+  if (s.ok()) s = SaveToolPath(FLAGS_out, machine, path);
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt generate: %s\n", s.message().c_str());
     return kExitBadInput;

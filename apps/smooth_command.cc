@@ -5,7 +5,7 @@
 #include "apps/commands.h"
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
-#include "apps/inputs.h"
+#include "apps/job_io.h"
 #include "apps/options_from_flags.h"
 #include "apps/report.h"
 #include "model/apt_io.h"
@@ -52,7 +52,7 @@ int RunSmooth(const Invocation& invocation) {
     return Fail(kExitBadInput, FLAGS_in + ": " + s.message());
   }
   result.output.title = "tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in;
-  s = WriteApt(FLAGS_out, result.output);
+  s = SaveToolPath(FLAGS_out, job.machine, result.output);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   if (!FLAGS_report.empty()) {
     s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));

@@ -66,24 +66,19 @@ std::vector<double> ProjectPathOntoRail(const BSplineCurve& rail, const ToolPath
   bool have_previous = false;
   double previous = 0.0;
   for (size_t i = 0; i < path.poses.size(); ++i) {
-    if (path.poses[i].rapid) continue;
     const Eigen::Vector3d& p = path.poses[i].p_w_tip;
+    // A rapid may come from anywhere (a retract, another pass): search the
+    // whole rail for the pose it reaches.
+    const bool fresh = !have_previous || path.poses[i].rapid;
     const double lo = std::max(0.0, previous - window_u), hi = std::min(1.0, previous + window_u);
-    u[i] = have_previous ? ProjectOntoCurve(rail, p, lo, hi, 16) : -1.0;
+    u[i] = fresh ? -1.0 : ProjectOntoCurve(rail, p, lo, hi, 16);
     // A foot on the window's edge means the step was larger than the
     // window: search the whole rail instead.
-    if (!have_previous || (u[i] == lo && lo > 0.0) || (u[i] == hi && hi < 1.0)) {
+    if (fresh || (u[i] == lo && lo > 0.0) || (u[i] == hi && hi < 1.0)) {
       u[i] = ProjectOntoCurve(rail, p, 0.0, 1.0, 256);
     }
     previous = u[i];
     have_previous = true;
-  }
-  // Rapids take the u of the nearest cutting pose before them (or after).
-  for (size_t i = 1; i < u.size(); ++i) {
-    if (path.poses[i].rapid) u[i] = u[i - 1];
-  }
-  for (size_t i = u.size(); i-- > 1;) {
-    if (path.poses[i - 1].rapid) u[i - 1] = u[i];
   }
   return u;
 }

@@ -203,17 +203,24 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   state->s_mm.assign(n, 0.0);
   state->t_s.assign(n, 0.0);
   state->u = ProjectPathOntoRail(in.surface->rail(0), path);
+  // Arc length of the contact along rail 0, not of the tip: in a tight
+  // concave bend the tip hardly moves while the contact sweeps the bend,
+  // and a tip parameter would crush the deviation weight and blow up the
+  // derivatives there. Repeated poses get a floor of 1e-3 of the mean
+  // step, so that divided differences stay finite and tame.
+  std::vector<double> ds(n, 0.0);
+  double total_mm = 0.0;
+  for (size_t i = 1; i < n; ++i) {
+    ds[i] = (in.surface->rail(0).Point(state->u[i]) - in.surface->rail(0).Point(state->u[i - 1]))
+                .norm();
+    total_mm += ds[i];
+  }
+  const double floor_mm = std::max(kMinStep, 1e-3 * total_mm / std::max<size_t>(1, n - 1));
   for (size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d& p = guess.poses[i].p_w_tip;
     state->poses[i] = {joints[i][kA], joints[i][kC], p.x(), p.y(), p.z()};
     if (i == 0) continue;
-    // Arc length of the contact along rail 0, not of the tip: in a tight
-    // concave bend the tip hardly moves while the contact sweeps the bend,
-    // and a tip parameter would crush the deviation weight and blow up the
-    // derivatives there.
-    const double ds = (in.surface->rail(0).Point(state->u[i]) -
-                       in.surface->rail(0).Point(state->u[i - 1])).norm();
-    state->s_mm[i] = state->s_mm[i - 1] + std::max(ds, kMinStep);
+    state->s_mm[i] = state->s_mm[i - 1] + std::max(ds[i], floor_mm);
     const double dt = SegmentTime(*in.machine, path, joints, i - 1, o.default_feed_mm_per_min);
     state->t_s[i] = state->t_s[i - 1] + std::max(dt, kMinStep);
   }

@@ -1,4 +1,4 @@
-#include "apps/inputs.h"
+#include "apps/job_io.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,6 +6,7 @@
 
 #include "apps/flags.h"
 #include "model/apt_io.h"
+#include "model/gcode_io.h"
 #include "model/json_io.h"
 
 namespace tpopt {
@@ -26,20 +27,49 @@ double LongestRulingMm(const RuledSurface& surface) {
   return longest;
 }
 
+bool IsApt(const std::string& ext) { return ext == "cls" || ext == "apt" || ext == "cl"; }
+bool IsGcode(const std::string& ext) { return ext == "ngc" || ext == "nc"; }
+
+Status UnknownFormat(const std::string& path, const std::string& ext) {
+  return Status::Error(path + ": unknown tool-path format '." + ext +
+                       "' (expected .cls, .apt, .cl, .ngc or .nc)");
+}
+
+GcodeStyle StyleFromFlags() {
+  return FLAGS_gcode_style == "joint" ? GcodeStyle::kJoint : GcodeStyle::kTcp;
+}
+
 }  // namespace
 
-Status LoadToolPath(const std::string& path, bool quiet, ToolPath* tool_path) {
+Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
+                    ToolPath* tool_path) {
   const std::string ext = Extension(path);
-  if (ext != "cls" && ext != "apt" && ext != "cl") {
-    return Status::Error(path + ": unknown tool-path format '." + ext +
-                         "' (expected .cls, .apt or .cl)");
-  }
   std::vector<std::string> warnings;
-  Status s = ReadApt(path, tool_path, &warnings);
+  Status s;
+  if (IsApt(ext)) {
+    s = ReadApt(path, tool_path, &warnings);
+  } else if (IsGcode(ext)) {
+    s = ReadGcode(path, machine, StyleFromFlags(), tool_path, &warnings);
+  } else {
+    return UnknownFormat(path, ext);
+  }
   if (!quiet) {
     for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   }
   return s;
+}
+
+Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path) {
+  const std::string ext = Extension(path);
+  if (IsApt(ext)) return WriteApt(path, tool_path);
+  if (!IsGcode(ext)) return UnknownFormat(path, ext);
+  GcodeOptions options;
+  options.style = StyleFromFlags();
+  options.inverse_time = FLAGS_gcode_inverse_time;
+  options.preamble = FLAGS_gcode_preamble;
+  options.postamble = FLAGS_gcode_postamble;
+  options.default_feed_mm_per_min = FLAGS_feed;
+  return WriteGcode(path, tool_path, machine, options);
 }
 
 Status LoadMachine(const std::string& path, Machine* machine) {
@@ -74,9 +104,9 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
 
 Status LoadJob(bool quiet, Job* job) {
   job->has_surface = !FLAGS_surface.empty();
-  Status s = LoadToolPath(FLAGS_in, quiet, &job->path);
+  Status s = LoadMachine(FLAGS_machine, &job->machine);
+  if (s.ok()) s = LoadToolPath(FLAGS_in, job->machine, quiet, &job->path);
   if (s.ok() && job->has_surface) s = ReadSurfaceJson(FLAGS_surface, &job->surface);
-  if (s.ok()) s = LoadMachine(FLAGS_machine, &job->machine);
   if (s.ok()) {
     s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius, FLAGS_flute_length,
                       &job->cutter);

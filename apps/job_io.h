@@ -1,6 +1,7 @@
-// Loading what a subcommand's flags name, with messages fit for a user.
-#ifndef TPOPT_APPS_INPUTS_H_
-#define TPOPT_APPS_INPUTS_H_
+// Reading and writing what a subcommand's flags name, with messages fit for
+// a user; the file format follows the extension.
+#ifndef TPOPT_APPS_JOB_IO_H_
+#define TPOPT_APPS_JOB_IO_H_
 
 #include <optional>
 #include <string>
@@ -13,9 +14,15 @@
 
 namespace tpopt {
 
-// A CL path by its extension: .cls, .apt or .cl (APT). Reader warnings go
-// to stderr unless quiet.
-Status LoadToolPath(const std::string& path, bool quiet, ToolPath* tool_path);
+// A tool path by its extension: .cls, .apt or .cl (APT), .ngc or .nc
+// (LinuxCNC G-code, read with the machine and --gcode_style). Reader
+// warnings go to stderr unless quiet.
+Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
+                    ToolPath* tool_path);
+
+// Writes a tool path by its extension (as LoadToolPath), whole or not at
+// all; G-code follows the --gcode_* flags.
+Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path);
 
 // The machine file, or without one an ideal A/C table at the origin with
 // no limits (A/C metrics are exact; X/Y/Z are relative to that pivot).
@@ -46,4 +53,4 @@ Status Require(const std::string& value, const std::string& flag);
 
 }  // namespace tpopt
 
-#endif  // TPOPT_APPS_INPUTS_H_
+#endif  // TPOPT_APPS_JOB_IO_H_
