@@ -14,6 +14,7 @@ namespace tpopt {
 int RunEvaluate(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
   if (s.ok()) s = Require(FLAGS_report, "report");
+  if (s.ok()) s = CheckGcodeFlags();
   DeviationOptions deviation_options;
   MotionOptions motion_options;
   if (s.ok()) s = MetricOptionsFromFlags(&deviation_options, &motion_options);

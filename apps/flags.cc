@@ -6,9 +6,11 @@ DEFINE_string(in, "", "Input tool path: APT CL (.cls, .apt, .cl) or LinuxCNC G-c
 DEFINE_string(out, "",
               "Output tool path, APT or G-code by its extension; written whole or not at all.");
 DEFINE_string(gcode_style, "tcp",
-              "G-code: tcp (X Y Z = tool tip in the workpiece, A C joints; the controller's TCP "
-              "mode) or joint (X Y Z = machine joints by inverse kinematics). For reading, the "
-              "style at the start; M428/M429 switch it.");
+              "G-code output: tcp (X Y Z = tool tip in the workpiece, A C joints; the "
+              "controller's TCP mode) or joint (X Y Z = machine joints by inverse kinematics).");
+DEFINE_string(gcode_in_style, "tcp",
+              "G-code input: the style (tcp or joint) at the start of the program; M428 and M429 "
+              "in the program switch it.");
 DEFINE_bool(gcode_inverse_time, false, "G-code output: G93 inverse-time feeds from the planned "
             "segment times instead of G94 mm/min.");
 DEFINE_string(gcode_preamble, "(switch the controller to tool-centre-point mode here, e.g. M428)",

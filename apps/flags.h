@@ -14,6 +14,7 @@ DECLARE_bool(quiet);
 
 // G-code (.ngc / .nc files)
 DECLARE_string(gcode_style);
+DECLARE_string(gcode_in_style);
 DECLARE_bool(gcode_inverse_time);
 DECLARE_string(gcode_preamble);
 DECLARE_string(gcode_postamble);

@@ -14,6 +14,7 @@ namespace tpopt {
 int RunGenerate(const Invocation&) {
   Status s = Require(FLAGS_surface, "surface");
   if (s.ok()) s = Require(FLAGS_out, "out");
+  if (s.ok()) s = CheckGcodeFlags();
   FlankPathOptions options;
   if (FLAGS_strategy == "spo") {
     options.strategy = FlankStrategy::kSinglePointOffset;

@@ -35,8 +35,8 @@ Status UnknownFormat(const std::string& path, const std::string& ext) {
                        "' (expected .cls, .apt, .cl, .ngc or .nc)");
 }
 
-GcodeStyle StyleFromFlags() {
-  return FLAGS_gcode_style == "joint" ? GcodeStyle::kJoint : GcodeStyle::kTcp;
+GcodeStyle StyleOf(const std::string& flag) {
+  return flag == "joint" ? GcodeStyle::kJoint : GcodeStyle::kTcp;
 }
 
 }  // namespace
@@ -49,7 +49,7 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
   if (IsApt(ext)) {
     s = ReadApt(path, tool_path, &warnings);
   } else if (IsGcode(ext)) {
-    s = ReadGcode(path, machine, StyleFromFlags(), tool_path, &warnings);
+    s = ReadGcode(path, machine, StyleOf(FLAGS_gcode_in_style), tool_path, &warnings);
   } else {
     return UnknownFormat(path, ext);
   }
@@ -64,7 +64,7 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
   if (IsApt(ext)) return WriteApt(path, tool_path);
   if (!IsGcode(ext)) return UnknownFormat(path, ext);
   GcodeOptions options;
-  options.style = StyleFromFlags();
+  options.style = StyleOf(FLAGS_gcode_style);
   options.inverse_time = FLAGS_gcode_inverse_time;
   options.preamble = FLAGS_gcode_preamble;
   options.postamble = FLAGS_gcode_postamble;
@@ -113,6 +113,17 @@ Status LoadJob(bool quiet, Job* job) {
     if (!s.ok()) s = Status::Error(FLAGS_in + ": " + s.message());
   }
   return s;
+}
+
+Status CheckGcodeFlags() {
+  for (const auto& [name, value] :
+       {std::pair<const char*, std::string>{"gcode_style", FLAGS_gcode_style},
+        {"gcode_in_style", FLAGS_gcode_in_style}}) {
+    if (value != "tcp" && value != "joint") {
+      return Status::Error(std::string("--") + name + "=" + value + " must be tcp or joint");
+    }
+  }
+  return Status::Ok();
 }
 
 Status Require(const std::string& value, const std::string& flag) {

@@ -48,6 +48,9 @@ struct Job {
 // Loads a Job from the flags; errors name the file at fault.
 Status LoadJob(bool quiet, Job* job);
 
+// Fails (usage) when --gcode_style or --gcode_in_style is not tcp or joint.
+Status CheckGcodeFlags();
+
 // Fails (usage) when a required flag is empty.
 Status Require(const std::string& value, const std::string& flag);
 

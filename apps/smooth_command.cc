@@ -24,6 +24,7 @@ int Fail(int code, const std::string& message) {
 int RunSmooth(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
   if (s.ok()) s = Require(FLAGS_out, "out");
+  if (s.ok()) s = CheckGcodeFlags();
   if (s.ok() && FLAGS_mode != "spline" && FLAGS_mode != "high_accuracy") {
     s = Status::Error("--mode=" + FLAGS_mode + " must be spline or high_accuracy");
   }

@@ -226,9 +226,18 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   }
   const double length_mm = std::max(state->s_mm.back(), kMinStep);
   const std::vector<bool> free_pose = FreePoses(path);
+  const AxisLimits& a_travel = in.machine->limits[kA];
   for (size_t i = 0; i < n; ++i) {
-    problem->AddParameterBlock(state->poses[i].data(), kPoseSize);
-    if (!free_pose[i]) problem->SetParameterBlockConstant(state->poses[i].data());
+    double* pose = state->poses[i].data();
+    problem->AddParameterBlock(pose, kPoseSize);
+    if (!free_pose[i]) {
+      problem->SetParameterBlockConstant(pose);
+      continue;
+    }
+    // The flank distance does not change when the axis is reversed about
+    // the tip, so nothing but the travel keeps a pose from flipping over.
+    if (std::isfinite(a_travel.min)) problem->SetParameterLowerBound(pose, kPoseA, a_travel.min);
+    if (std::isfinite(a_travel.max)) problem->SetParameterUpperBound(pose, kPoseA, a_travel.max);
   }
   AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
   for (size_t i = 0; i < n; ++i) {

@@ -1,0 +1,220 @@
+// G-code out and in, checked by LinuxCNC's own interpreter (rs274 from
+// Debian's linuxcnc-uspace) where it is installed.
+#include "model/gcode_io.h"
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "model/json_io.h"
+#include "model/path_generator.h"
+#include "tests/test_util.h"
+
+namespace tpopt {
+namespace {
+
+constexpr char kRs274[] = "/usr/bin/rs274";
+constexpr char kImpellerNgc[] =
+    "/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/vismach/5axis/"
+    "table-rotary-tilting/demos/impeller-7bl-xyzac.ngc";
+
+struct CanonMove {
+  bool feed;
+  double v[5];  // x y z a c
+};
+
+// Runs rs274 on `file`; fails the test on any line that is not a canonical
+// call (an interpreter error), and returns the moves it printed.
+std::vector<CanonMove> Interpret(const std::string& file) {
+  const testing::CommandResult r = testing::RunCommand(std::string(kRs274) + " -g " + file);
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  std::vector<CanonMove> moves;
+  std::istringstream lines(r.output);
+  std::string line;
+  const std::regex canon(R"(^\s*\d+ N\.\.\.\.\. ([A-Z_0-9]+)\((.*)\)\s*$)");
+  while (std::getline(lines, line)) {
+    std::smatch m;
+    if (line == "executing") continue;
+    if (!std::regex_match(line, m, canon)) {
+      ADD_FAILURE() << file << ": interpreter said: " << line;
+      continue;
+    }
+    const std::string call = m[1];
+    if (call != "STRAIGHT_FEED" && call != "STRAIGHT_TRAVERSE") continue;
+    CanonMove move{call == "STRAIGHT_FEED", {}};
+    double b = 0;
+    std::sscanf(m[2].str().c_str(), "%lf, %lf, %lf, %lf, %lf, %lf", &move.v[0], &move.v[1],
+                &move.v[2], &move.v[3], &b, &move.v[4]);
+    moves.push_back(move);
+  }
+  return moves;
+}
+
+class GcodeIoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(ReadMachineJson(
+                    testing::SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json"), &machine_)
+                    .ok());
+    RuledSurface surface;
+    ASSERT_TRUE(
+        ReadSurfaceJson(testing::SourcePath("data/surfaces/impeller_blade.json"), &surface).ok());
+    FlankPathOptions g;
+    g.poses = 40;
+    ASSERT_TRUE(GenerateFlankPath(surface, g, &path_).ok());
+    path_.poses[20].rapid = true;  // a rapid in the middle stays a rapid
+  }
+
+  Machine machine_;
+  ToolPath path_;
+  testing::TempDir dir_;
+};
+
+TEST_F(GcodeIoTest, RoundTripsInBothStylesAndFeedModes) {
+  for (GcodeStyle style : {GcodeStyle::kTcp, GcodeStyle::kJoint}) {
+    for (bool inverse_time : {false, true}) {
+      GcodeOptions o;
+      o.style = style;
+      o.inverse_time = inverse_time;
+      const std::string file = dir_.File("rt.ngc");
+      ASSERT_TRUE(WriteGcode(file, path_, machine_, o).ok());
+      ToolPath back;
+      std::vector<std::string> warnings;
+      ASSERT_TRUE(ReadGcode(file, machine_, style, &back, &warnings).ok());
+      EXPECT_TRUE(warnings.empty()) << warnings.front();
+      ASSERT_EQ(back.poses.size(), path_.poses.size());
+      for (size_t i = 0; i < back.poses.size(); ++i) {
+        EXPECT_LT((back.poses[i].p_w_tip - path_.poses[i].p_w_tip).norm(), 2e-4) << i;
+        EXPECT_LT((back.poses[i].a_w - path_.poses[i].a_w).norm(), 1e-5) << i;
+        EXPECT_EQ(back.poses[i].rapid, path_.poses[i].rapid || i == 0) << i;
+        if (!back.poses[i].rapid) {
+          EXPECT_NEAR(back.poses[i].feed_mm_per_min, 1000.0, 0.5) << i;
+        }
+      }
+    }
+  }
+}
+
+TEST_F(GcodeIoTest, LinuxCncInterpreterAcceptsEveryStyleAndMatchesTheMoves) {
+  if (!testing::FileExists(kRs274)) GTEST_SKIP() << "rs274 (linuxcnc-uspace) not installed";
+  for (GcodeStyle style : {GcodeStyle::kTcp, GcodeStyle::kJoint}) {
+    for (bool inverse_time : {false, true}) {
+      GcodeOptions o;
+      o.style = style;
+      o.inverse_time = inverse_time;
+      path_.title = "check (with parentheses) for rs274";
+      const std::string file = dir_.File("lcnc.ngc");
+      ASSERT_TRUE(WriteGcode(file, path_, machine_, o).ok());
+      const std::vector<CanonMove> moves = Interpret(file);
+      std::vector<JointVector> joints;
+      ASSERT_TRUE(machine_.AssignJoints(path_, &joints).ok());
+      ASSERT_EQ(moves.size(), path_.poses.size());
+      for (size_t i = 0; i < moves.size(); ++i) {
+        const Eigen::Vector3d xyz = style == GcodeStyle::kTcp
+                                        ? path_.poses[i].p_w_tip
+                                        : Eigen::Vector3d(joints[i].head<3>());
+        EXPECT_EQ(moves[i].feed, !(path_.poses[i].rapid || i == 0)) << i;
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(moves[i].v[k], xyz[k], 1e-4) << i;
+        EXPECT_NEAR(moves[i].v[3], joints[i][kA] * 180 / M_PI, 1e-4) << i;
+        EXPECT_NEAR(moves[i].v[4], joints[i][kC] * 180 / M_PI, 1e-4) << i;
+      }
+    }
+  }
+}
+
+TEST_F(GcodeIoTest, BadProgramsNameTheLine) {
+  auto error_of = [&](const std::string& text) {
+    std::istringstream in(text);
+    ToolPath p;
+    std::vector<std::string> w;
+    const Status s = ReadGcodeStream(in, "bad.ngc", machine_, GcodeStyle::kTcp, &p, &w);
+    return s.ok() ? std::string() : s.message();
+  };
+  EXPECT_NE(error_of("G1 X1\nG2 X2 Y2 I1 J0\n").find("bad.ngc:2: arcs"), std::string::npos);
+  EXPECT_NE(error_of("X1 Y2\n").find("bad.ngc:1: axis words before any G0/G1"), std::string::npos);
+  EXPECT_NE(error_of("G1 X1 (open\n").find("bad.ngc:1: unbalanced"), std::string::npos);
+  EXPECT_NE(error_of("G1 X-\n").find("bad.ngc:1: word X has no valid number"),
+            std::string::npos);
+  EXPECT_NE(error_of("G1 X2000000\n").find("bad.ngc:1: word X value 2000000 is out of range"),
+            std::string::npos);
+  EXPECT_NE(error_of("(only a comment)\n").find("no G0/G1 move"), std::string::npos);
+  EXPECT_NE(error_of("G1 X1 F0\n").find("bad.ngc:1: F0 must be > 0"), std::string::npos);
+  // An unknown word is warned once, not fatal (X1e5 reads as X1 and E5).
+  {
+    std::istringstream in("G1 X1e5\nG1 X2 E3\n");
+    ToolPath p;
+    std::vector<std::string> w;
+    ASSERT_TRUE(ReadGcodeStream(in, "w.ngc", machine_, GcodeStyle::kTcp, &p, &w).ok());
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_NE(w[0].find("w.ngc:1: word 'E'"), std::string::npos) << w[0];
+  }
+  // Inches, incremental moves, modal motion and comments.
+  std::istringstream in("G20 G91 ; inches, relative\nG1 X1 F10 (one inch)\nY1\nG90 G21 G0 Z5\n");
+  ToolPath p;
+  std::vector<std::string> w;
+  ASSERT_TRUE(ReadGcodeStream(in, "ok.ngc", machine_, GcodeStyle::kTcp, &p, &w).ok());
+  ASSERT_EQ(p.poses.size(), 3u);
+  EXPECT_LT((p.poses[1].p_w_tip - Eigen::Vector3d(25.4, 25.4, 0)).norm(), 1e-12);
+  EXPECT_NEAR(p.poses[1].feed_mm_per_min, 254.0, 1e-9);
+  EXPECT_TRUE(p.poses[2].rapid);
+  EXPECT_EQ(p.poses[2].p_w_tip.z(), 5.0);
+}
+
+TEST_F(GcodeIoTest, ReadsLinuxCncsImpellerProgram) {
+  if (!testing::FileExists(kImpellerNgc)) {
+    GTEST_SKIP() << kImpellerNgc << " absent (Debian package linuxcnc-uspace)";
+  }
+  ToolPath p;
+  std::vector<std::string> warnings;
+  const Status s = ReadGcode(kImpellerNgc, machine_, GcodeStyle::kJoint, &p, &warnings);
+  ASSERT_TRUE(s.ok()) << s.message();
+  // Every G0/G1 line with an axis word is one pose: count them independently.
+  std::ifstream in(kImpellerNgc);
+  std::string line;
+  size_t moves = 0, rapids = 0;
+  while (std::getline(in, line)) {
+    const bool move = std::regex_search(line, std::regex(R"(^G[01]\s.*[XYZAC]\s*-?[0-9.])"));
+    moves += move;
+    rapids += move && line.rfind("G0", 0) == 0;
+  }
+  EXPECT_EQ(p.poses.size(), moves);
+  size_t read_rapids = 0;
+  for (const ToolPose& pose : p.poses) read_rapids += pose.rapid;
+  EXPECT_EQ(read_rapids, rapids);
+  // M428 switched the program to TCP: the first pose's tip is its X Y Z.
+  EXPECT_LT((p.poses[0].p_w_tip - Eigen::Vector3d(16.339, -25.409, 33.353)).norm(), 1e-9);
+  EXPECT_GT(p.poses.size(), 1000u);
+}
+
+}  // namespace
+}  // namespace tpopt
+
+namespace tpopt {
+namespace {
+
+TEST(GcodeCliTest, SmoothedProgramsLoadInLinuxCnc) {
+  if (!testing::FileExists(kRs274)) GTEST_SKIP() << "rs274 (linuxcnc-uspace) not installed";
+  testing::TempDir dir;
+  const std::string blade = testing::SourcePath("data/surfaces/impeller_blade.json");
+  const std::string sim = testing::SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+  const std::string tpopt = testing::TpoptBinary();
+  auto r = testing::RunCommand(tpopt + " generate --surface=" + blade +
+                               " --cutter_radius=4 --poses=60 --uv_distortion=0.03 --machine=" +
+                               sim + " --out=" + dir.File("cam.ngc"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(Interpret(dir.File("cam.ngc")).size(), 60u);
+  for (const std::string style : {"tcp", "joint"}) {
+    const std::string out = dir.File("smooth_" + style + ".ngc");
+    r = testing::RunCommand(tpopt + " smooth --in=" + dir.File("cam.ngc") + " --out=" + out +
+                            " --surface=" + blade + " --machine=" + sim +
+                            " --cutter_radius=4 --mode=high_accuracy --quiet --gcode_inverse_time"
+                            " --gcode_style=" + style);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(Interpret(out).size(), 60u) << style;
+  }
+}
+
+}  // namespace
+}  // namespace tpopt
