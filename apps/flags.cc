@@ -42,7 +42,12 @@ DEFINE_int32(samples_v, 21, "Deviation grid: samples along each ruling (v).");
 DEFINE_string(mode, "high_accuracy",
               "smooth: spline (the seed's plain cubic-spline method, fast) or high_accuracy "
               "(Ceres least squares started from the spline result).");
-DEFINE_double(tolerance_mm, 0.01, "high_accuracy: deviation unit of the cost, mm.");
+DEFINE_double(tolerance_mm, 0.01,
+              "high_accuracy: with a surface, the deviation unit of the cost, mm; without one, "
+              "how far a tip may leave the original tip polyline, mm.");
+DEFINE_double(angle_tolerance_deg, 0.5,
+              "high_accuracy without a surface: how far a tool axis may turn from the "
+              "original, deg.");
 DEFINE_double(overcut_factor, 3.0, "high_accuracy: weight of overcut relative to undercut (>= 1).");
 DEFINE_double(w_deviation, 1.0, "high_accuracy: weight of the swept-cutter deviation.");
 DEFINE_double(w_second, 1e3,
@@ -57,7 +62,7 @@ DEFINE_int32(ruling_samples, 7, "high_accuracy: deviation samples along each rul
 DEFINE_int32(between_samples, 1, "high_accuracy: deviation checks inside each move.");
 DEFINE_int32(max_iterations, 100, "high_accuracy: Ceres iteration limit.");
 DEFINE_int32(num_threads, 1, "high_accuracy: Ceres threads.");
-DEFINE_double(angle_tolerance_deg, 0.05,
+DEFINE_double(spline_tolerance_deg, 0.05,
               "spline: largest A/C change the fit may make outside the abrupt zones, deg "
               "(sets the smoothing).");
 DEFINE_bool(smooth_outside_zones, false,

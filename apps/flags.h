@@ -42,6 +42,7 @@ DECLARE_int32(samples_v);
 // smooth
 DECLARE_string(mode);
 DECLARE_double(tolerance_mm);
+DECLARE_double(spline_tolerance_deg);
 DECLARE_double(overcut_factor);
 DECLARE_double(w_deviation);
 DECLARE_double(w_second);

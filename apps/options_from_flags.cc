@@ -14,7 +14,7 @@ Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion
 }
 
 Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptions* ha) {
-  spline->angle_tolerance_deg = FLAGS_angle_tolerance_deg;
+  spline->angle_tolerance_deg = FLAGS_spline_tolerance_deg;
   spline->zone_factor = FLAGS_zone_factor;
   spline->zone_padding = FLAGS_zone_padding;
   spline->insert_transitions = FLAGS_insert_transitions;
@@ -34,6 +34,7 @@ Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptio
   ha->max_iterations = FLAGS_max_iterations;
   ha->num_threads = FLAGS_num_threads;
   ha->default_feed_mm_per_min = FLAGS_feed;
+  ha->angle_tolerance_deg = FLAGS_angle_tolerance_deg;
   ha->progress = !FLAGS_quiet;
   std::string why;
   if (!spline->IsValid(&why)) return Status::Error(why);

@@ -104,7 +104,8 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
     report["ceres"] = {{"message", ha.message},
                        {"initial_cost", ha.initial_cost},
                        {"final_cost", ha.final_cost},
-                       {"final_cost_by_family", ha.final_cost_by_family}};
+                       {"final_cost_by_family", ha.final_cost_by_family},
+                       {"poses_clamped_to_band", ha.poses_clamped}};
   }
   return report;
 }

@@ -34,9 +34,6 @@ int RunSmooth(const Invocation& invocation) {
   settings.feed.default_feed_mm_per_min = FLAGS_feed;
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
   if (s.ok()) s = SmootherOptionsFromFlags(&settings.spline, &settings.high_accuracy);
-  if (s.ok() && settings.mode == SmoothingMode::kHighAccuracy && FLAGS_surface.empty()) {
-    s = Status::Error("--mode=high_accuracy needs --surface");
-  }
   if (!s.ok()) return Fail(kExitUsage, s.message());
 
   Job job;

@@ -14,6 +14,7 @@
 #include "solver/deviation_cost.h"
 #include "solver/smoothness_cost.h"
 #include "solver/tip_height_cost.h"
+#include "solver/tolerance_band_cost.h"
 
 namespace tpopt {
 namespace {
@@ -153,6 +154,56 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
   }
 }
 
+// The band around the original program of every free pose (surface-free).
+ToleranceBandCost::Band BandOf(const ToolPath& path, const HighAccuracyOptions& o, size_t i) {
+  const size_t n = path.poses.size();
+  const size_t prev = i > 0 && !path.poses[i].rapid ? i - 1 : i;
+  const size_t next = i + 1 < n && !path.poses[i + 1].rapid ? i + 1 : i;
+  ToleranceBandCost::Band band;
+  band.p0_w = path.poses[i].p_w_tip;
+  band.a0_w = path.poses[i].a_w;
+  const Eigen::Vector3d chord = path.poses[next].p_w_tip - path.poses[prev].p_w_tip;
+  band.tangent_w = chord.norm() > 1e-12 ? Eigen::Vector3d(chord.normalized())
+                                        : Eigen::Vector3d::Zero();
+  band.step_mm = std::max(chord.norm() / std::max<size_t>(1, next - prev), 1e-3);
+  band.tolerance_mm = o.tolerance_mm;
+  band.angle_tolerance_rad = o.angle_tolerance_deg * M_PI / 180.0;
+  return band;
+}
+
+void AddToleranceFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                        double length_mm, const std::vector<bool>& free_pose,
+                        SmoothingState* state, ceres::Problem* problem) {
+  for (size_t i = 0; i < free_pose.size(); ++i) {
+    if (!free_pose[i]) continue;
+    const ToleranceBandCost::Band band = BandOf(*in.input, o, i);
+    state->families["tolerance"].push_back(problem->AddResidualBlock(
+        ToleranceBandCost::Create(band, std::sqrt(o.w_band * band.step_mm / length_mm),
+                                  o.slide_weight),
+        nullptr, state->poses[i].data()));
+  }
+}
+
+// Moves a pose back inside its band where the solve left it a little
+// outside, so that the surface-free promise holds exactly.
+bool ClampToBand(const ToleranceBandCost::Band& band, ToolPose* pose) {
+  bool clamped = false;
+  const Eigen::Vector3d d = pose->p_w_tip - band.p0_w;
+  const Eigen::Vector3d along = d.dot(band.tangent_w) * band.tangent_w;
+  const Eigen::Vector3d perp = d - along;
+  if (perp.norm() > band.tolerance_mm) {
+    pose->p_w_tip = band.p0_w + along + perp * (band.tolerance_mm / perp.norm());
+    clamped = true;
+  }
+  const double angle = std::acos(std::clamp(pose->a_w.dot(band.a0_w), -1.0, 1.0));
+  if (angle > band.angle_tolerance_rad) {
+    const Eigen::Vector3d axis = band.a0_w.cross(pose->a_w).normalized();
+    pose->a_w = Eigen::AngleAxisd(band.angle_tolerance_rad, axis) * band.a0_w;
+    clamped = true;
+  }
+  return clamped;
+}
+
 }  // namespace
 
 bool HighAccuracyOptions::IsValid(std::string* why) const {
@@ -174,6 +225,9 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
   } else if (ruling_samples < 2 || between_samples < 0) {
     err << "ruling samples " << ruling_samples << " must be >= 2 and between samples "
         << between_samples << " >= 0";
+  } else if (!(angle_tolerance_deg > 0) || !(w_band > 0) || !(slide_weight >= 0)) {
+    err << "surface-free band: angle tolerance " << angle_tolerance_deg << " deg and band weight "
+        << w_band << " must be > 0, slide weight " << slide_weight << " >= 0";
   } else if (!(default_feed_mm_per_min > 0)) {
     err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
   } else if (max_iterations < 0 || num_threads < 1) {
@@ -188,7 +242,7 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
 
 Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
                     SmoothingState* state, ceres::Problem* problem) {
-  CHECK(in.input && in.surface && in.cutter && in.machine && state && problem);
+  CHECK(in.input && in.cutter && in.machine && state && problem);
   const ToolPath& guess = in.initial_guess ? *in.initial_guess : *in.input;
   const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
@@ -202,7 +256,8 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   state->poses.resize(n);
   state->s_mm.assign(n, 0.0);
   state->t_s.assign(n, 0.0);
-  state->u = ProjectPathOntoRail(in.surface->rail(0), path);
+  state->u = in.surface ? ProjectPathOntoRail(in.surface->rail(0), path)
+                        : std::vector<double>(n, 0.0);
   // Arc length of the contact along rail 0, not of the tip: in a tight
   // concave bend the tip hardly moves while the contact sweeps the bend,
   // and a tip parameter would crush the deviation weight and blow up the
@@ -211,8 +266,10 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   std::vector<double> ds(n, 0.0);
   double total_mm = 0.0;
   for (size_t i = 1; i < n; ++i) {
-    ds[i] = (in.surface->rail(0).Point(state->u[i]) - in.surface->rail(0).Point(state->u[i - 1]))
-                .norm();
+    ds[i] = in.surface ? (in.surface->rail(0).Point(state->u[i]) -
+                          in.surface->rail(0).Point(state->u[i - 1]))
+                             .norm()
+                       : (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
     total_mm += ds[i];
   }
   const double floor_mm = std::max(kMinStep, 1e-3 * total_mm / std::max<size_t>(1, n - 1));
@@ -239,9 +296,13 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
     if (std::isfinite(a_travel.min)) problem->SetParameterLowerBound(pose, kPoseA, a_travel.min);
     if (std::isfinite(a_travel.max)) problem->SetParameterUpperBound(pose, kPoseA, a_travel.max);
   }
-  AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
+  if (in.surface == nullptr) {
+    AddToleranceFamily(in, o, length_mm, free_pose, state, problem);
+  } else {
+    AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
+  }
   for (size_t i = 0; i < n; ++i) {
-    if (!free_pose[i] || o.w_tip_height <= 0) continue;
+    if (!free_pose[i] || o.w_tip_height <= 0 || in.surface == nullptr) continue;
     const double h = (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2;
     state->families["tip_height"].push_back(problem->AddResidualBlock(
         TipHeightCost::Create(in.surface->rail(0).Point(state->u[i]),
@@ -296,10 +357,14 @@ Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptio
     report->final_cost_by_family[family] = cost;
   }
   *out = *inputs.input;
+  const std::vector<bool> free_pose = FreePoses(*inputs.input);
   for (size_t i = 0; i < out->poses.size(); ++i) {
     const auto& p = state.poses[i];
     out->poses[i].p_w_tip = Eigen::Vector3d(p[kPoseTip], p[kPoseTip + 1], p[kPoseTip + 2]);
     out->poses[i].a_w = AnglesToAxis<double>(p[kPoseA], p[kPoseC]);
+    if (inputs.surface == nullptr && free_pose[i]) {
+      report->poses_clamped += ClampToBand(BandOf(*inputs.input, options, i), &out->poses[i]);
+    }
   }
   report->solve_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -6,6 +6,7 @@
 // Residual families, each a functor with its formula in its header:
 //   deviation   solver/deviation_cost.h     swept cutter vs ruled surface
 //   tip height  solver/tip_height_cost.h    removes the slide along the axis
+//   tolerance   solver/tolerance_band_cost.h  (surface-free, replaces both)
 //   second      solver/smoothness_cost.h    d2/ds2 of A, C and the tip
 //   third       solver/smoothness_cost.h    d3/ds3 of A, C and the tip
 //   limits      solver/axis_limit_cost.h    axis velocity/acceleration/jerk
@@ -58,6 +59,13 @@ struct HighAccuracyOptions {
   // Joint-space points between neighbouring poses checked for deviation
   // (0 = poses only).
   int between_samples = 1;
+  // Surface-free mode (no surface): each pose stays within tolerance_mm of
+  // the original tip polyline and within this angle of the original axis
+  // (solver/tolerance_band_cost.h); the band's walls weigh w_band, and
+  // slide_weight keeps poses at their stations along the path.
+  double angle_tolerance_deg = 0.5;
+  double w_band = 1e4;
+  double slide_weight = 0.1;
   // Programmed feed where the path has none, mm/min. > 0.
   double default_feed_mm_per_min = 1000.0;
   int max_iterations = 100;
@@ -71,7 +79,9 @@ struct HighAccuracyOptions {
 };
 
 // What the problem is built from. All pointers are non-null except that the
-// initial guess defaults to the input when absent.
+// initial guess defaults to the input when absent, and that without a
+// surface the problem is surface-free: the deviation and tip-height
+// families give way to the tolerance band around the original program.
 struct SmoothingInputs {
   const ToolPath* input = nullptr;          // the CAM path (gives u_i, feeds)
   const ToolPath* initial_guess = nullptr;  // same pose count as input
@@ -98,6 +108,9 @@ struct HighAccuracyReport {
   double initial_cost = 0.0;
   double final_cost = 0.0;
   std::map<std::string, double> final_cost_by_family;
+  // Surface-free: poses the solve left outside the band, moved back onto
+  // its edge.
+  int poses_clamped = 0;
 };
 
 // Fills `state` and adds every residual block to `problem`.

@@ -17,9 +17,6 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   CHECK(job.input && job.cutter && job.machine && result && failure);
   *failure = SmoothingFailure::kNone;
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
-  if (high_accuracy && job.surface == nullptr) {
-    return Fail(SmoothingFailure::kBadInput, "high-accuracy mode needs a surface", failure);
-  }
   auto evaluate = [&](const ToolPath& path, PathMetrics* metrics) {
     return EvaluatePath(path, *job.machine, job.surface, *job.cutter, settings.deviation,
                         settings.motion, metrics);
@@ -37,8 +34,11 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   if (!high_accuracy) {
     result->output = std::move(spline_path);
   } else {
-    s = evaluate(spline_path, &result->initial_guess_metrics);
-    const SmoothingInputs inputs{job.input, &spline_path, job.surface, job.cutter, job.machine};
+    // Without a surface the band around the program is the only measure of
+    // accuracy, and the input is the one start known to lie inside it.
+    const ToolPath& guess = job.surface != nullptr ? spline_path : *job.input;
+    s = evaluate(guess, &result->initial_guess_metrics);
+    const SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
     if (s.ok()) s = SmoothHighAccuracy(inputs, settings.high_accuracy, &result->output,
                                        &result->high_accuracy);
     if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);

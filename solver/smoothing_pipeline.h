@@ -1,6 +1,7 @@
 // The whole smoothing job, shared by `tpopt smooth` and the quality
 // benchmark: metrics of the input; the spline method (the output in spline
-// mode, the initial guess in high-accuracy mode); the Ceres solve; the
+// mode, the initial guess in high-accuracy mode with a surface; without one
+// the input itself starts the solve); the Ceres solve; the
 // refusal of a result worse than its start; feed scheduling; metrics of the
 // output.
 #ifndef TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
@@ -19,7 +20,7 @@ enum class SmoothingMode { kSpline, kHighAccuracy };
 
 struct SmoothingJob {
   const ToolPath* input = nullptr;
-  const RuledSurface* surface = nullptr;  // required for kHighAccuracy
+  const RuledSurface* surface = nullptr;  // null: surface-free smoothing
   const Cutter* cutter = nullptr;
   const Machine* machine = nullptr;
 };

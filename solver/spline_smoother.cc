@@ -120,17 +120,17 @@ bool SplineSmootherOptions::IsValid(std::string* why) const {
   return false;
 }
 
-Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const RuledSurface* surface,
-                         const Cutter& cutter, const SplineSmootherOptions& options,
-                         ToolPath* out, SplineSmootherReport* report) {
-  std::string why;
-  if (!options.IsValid(&why)) return Status::Error("spline options: " + why);
+namespace {
+
+// The method on one cutting run (no rapid after its first pose).
+Status SmoothRun(const ToolPath& in, const Machine& machine, const RuledSurface* surface,
+                 const Cutter& cutter, const SplineSmootherOptions& options, ToolPath* out,
+                 SplineSmootherReport* report) {
   std::vector<JointVector> joints;
   Status st = machine.AssignJoints(in, &joints);
   if (!st.ok()) return st;
   const size_t n = in.poses.size();
   *out = in;
-  *report = SplineSmootherReport();
   if (n < 4) return Status::Ok();  // nothing to smooth
   std::vector<double> s(n, 0.0), a(n), c(n);
   for (size_t i = 0; i < n; ++i) {
@@ -154,7 +154,7 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
     }
     MarkAbove(dk, options.zone_factor, &zone);
   }
-  report->zones = PadZones(options.zone_padding, &zone);
+  report->zones += PadZones(options.zone_padding, &zone);
   std::vector<double> weights(n, 1.0);
   for (size_t i = 0; i < n; ++i) {
     report->poses_in_zones += zone[i];
@@ -198,6 +198,34 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
     }
     out->poses.push_back(pose_at(i, in.poses[i], s[i], surface ? u[i] : 0.0));
   }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const RuledSurface* surface,
+                         const Cutter& cutter, const SplineSmootherOptions& options,
+                         ToolPath* out, SplineSmootherReport* report) {
+  std::string why;
+  if (!options.IsValid(&why)) return Status::Error("spline options: " + why);
+  *report = SplineSmootherReport();
+  ToolPath result = in;
+  result.poses.clear();
+  // Each cutting run separately: a spline must not bridge a rapid between
+  // two passes. A run starts at the pose a rapid reaches.
+  const size_t n = in.poses.size();
+  for (size_t first = 0; first < n;) {
+    size_t end = first + 1;
+    while (end < n && !in.poses[end].rapid) ++end;
+    ToolPath run = in;
+    run.poses.assign(in.poses.begin() + first, in.poses.begin() + end);
+    ToolPath smoothed;
+    Status st = SmoothRun(run, machine, surface, cutter, options, &smoothed, report);
+    if (!st.ok()) return st;
+    result.poses.insert(result.poses.end(), smoothed.poses.begin(), smoothed.poses.end());
+    first = end;
+  }
+  *out = std::move(result);
   return Status::Ok();
 }
 

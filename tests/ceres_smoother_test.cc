@@ -91,6 +91,40 @@ TEST_F(CeresSmootherTest, IsDeterministic) {
   EXPECT_EQ(ma.motion.axes[kC].peak_acceleration, mb.motion.axes[kC].peak_acceleration);
 }
 
+TEST_F(CeresSmootherTest, SurfaceFreeStaysInTheBandAndSmooths) {
+  HighAccuracyOptions options;
+  options.progress = false;
+  options.w_second = 1e6;
+  options.w_third = 0;
+  options.w_tip_second = 0;
+  ToolPath out;
+  HighAccuracyReport report;
+  const SmoothingInputs inputs{&spiked_, &spiked_, nullptr, &cutter_, &machine_};
+  ASSERT_TRUE(SmoothHighAccuracy(inputs, options, &out, &report).ok());
+  ASSERT_TRUE(report.converged);
+  EXPECT_EQ(report.final_cost_by_family.count("deviation"), 0u);
+  EXPECT_EQ(report.final_cost_by_family.count("tolerance"), 1u);
+  const size_t n = out.poses.size();
+  for (size_t i = 0; i < n; ++i) {
+    // Within 0.01 mm of the original tip polyline (the local chord) ...
+    const size_t a = i > 0 ? i - 1 : i, b = i + 1 < n ? i + 1 : i;
+    const Eigen::Vector3d t =
+        (spiked_.poses[b].p_w_tip - spiked_.poses[a].p_w_tip).normalized();
+    const Eigen::Vector3d d = out.poses[i].p_w_tip - spiked_.poses[i].p_w_tip;
+    EXPECT_LE((d - d.dot(t) * t).norm(), options.tolerance_mm + 1e-9) << i;
+    // ... and within 0.5 deg of the original axis.
+    const double angle = std::acos(std::min(1.0, out.poses[i].a_w.dot(spiked_.poses[i].a_w)));
+    EXPECT_LE(angle, options.angle_tolerance_deg * kDeg + 1e-9) << i;
+  }
+  // The 3 deg spike cannot go within a 0.5 deg band, but it is cut down.
+  const PathMetrics m = Evaluate(out), spiked = Evaluate(spiked_);
+  for (int axis : {kA, kC}) {
+    EXPECT_LT(m.motion.axes[axis].peak_second_derivative_per_mm2,
+              0.5 * spiked.motion.axes[axis].peak_second_derivative_per_mm2)
+        << axis;
+  }
+}
+
 TEST_F(CeresSmootherTest, RejectsMismatchedInputsAndBadOptions) {
   ToolPath shorter = clean_;
   shorter.poses.pop_back();

@@ -218,3 +218,46 @@ TEST(GcodeCliTest, SmoothedProgramsLoadInLinuxCnc) {
 
 }  // namespace
 }  // namespace tpopt
+
+namespace tpopt {
+namespace {
+
+TEST(GcodeCliTest, SurfaceFreeSmoothingOfLinuxCncsImpellerProgram) {
+  if (!testing::FileExists(kImpellerNgc) || !testing::FileExists(kRs274)) {
+    GTEST_SKIP() << kImpellerNgc << " or rs274 absent (Debian package linuxcnc-uspace)";
+  }
+  testing::TempDir dir;
+  const std::string sim = testing::SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+  const std::string out = dir.File("impeller_smooth.ngc"), report = dir.File("r.json");
+  const auto r = testing::RunCommand(
+      testing::TpoptBinary() + " smooth --flagfile=" +
+      testing::SourcePath("data/presets/surface_free.flags") + " --in=" + kImpellerNgc +
+      " --out=" + out + " --machine=" + sim + " --cutter_radius=3 --quiet --report=" + report);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  Machine machine;
+  ASSERT_TRUE(ReadMachineJson(sim, &machine).ok());
+  ToolPath before, after;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(ReadGcode(kImpellerNgc, machine, GcodeStyle::kJoint, &before, &warnings).ok());
+  ASSERT_TRUE(ReadGcode(out, machine, GcodeStyle::kTcp, &after, &warnings).ok());
+  ASSERT_EQ(after.poses.size(), before.poses.size());
+  const size_t n = before.poses.size();
+  for (size_t i = 0; i < n; ++i) {
+    const ToolPose &b = before.poses[i], &a = after.poses[i];
+    // Rapids unchanged (to the written precision).
+    if (b.rapid || (i + 1 < n && before.poses[i + 1].rapid) || i == 0) {
+      EXPECT_LT((a.p_w_tip - b.p_w_tip).norm(), 2e-4) << i;
+      continue;
+    }
+    const size_t lo = i - 1, hi = i + 1;
+    const Eigen::Vector3d t = (before.poses[hi].p_w_tip - before.poses[lo].p_w_tip).normalized();
+    const Eigen::Vector3d d = a.p_w_tip - b.p_w_tip;
+    // Within the tolerances, plus the 1e-4 rounding of the written program.
+    EXPECT_LE((d - d.dot(t) * t).norm(), 0.01 + 2e-4) << i;
+    EXPECT_LE(std::acos(std::min(1.0, a.a_w.dot(b.a_w))) * 180 / M_PI, 0.5 + 1e-3) << i;
+  }
+  EXPECT_EQ(Interpret(out).size(), n);
+}
+
+}  // namespace
+}  // namespace tpopt

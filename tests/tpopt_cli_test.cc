@@ -162,11 +162,7 @@ TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
   TempDir dir;
   const std::string out = dir.File("out.cls");
   std::ofstream(dir.File("p.cls")) << "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\nGOTO/3,0,0\n";
-  auto r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
-                            " --mode=high_accuracy"));
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("needs --surface"), std::string::npos) << r.output;
-  r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out + " --mode=fancy"));
+  auto r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out + " --mode=fancy"));
   EXPECT_EQ(r.exit_code, 2);
   r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
                        " --mode=spline --tolerance_mm=-1"));
