@@ -142,9 +142,16 @@ bool DeviationOptions::IsValid(std::string* why) const {
   return false;
 }
 
-Status EvaluateDeviation(const RuledSurface& surface, const Cutter& cutter, const ToolPath& path,
-                         const Machine& machine, const std::vector<JointVector>& joints,
-                         const DeviationOptions& options, DeviationReport* report) {
+namespace {
+
+// Prepares the motion and the grid, fills every grid point with
+// least_distance(motion, u, q) and summarises. One driver for the fast
+// evaluator and its brute-force reference, so that both see the same grid.
+template <typename LeastDistance>
+Status EvaluateOnGrid(const RuledSurface& surface, const Cutter& cutter, const ToolPath& path,
+                      const Machine& machine, const std::vector<JointVector>& joints,
+                      const DeviationOptions& options, LeastDistance least_distance,
+                      DeviationReport* report) {
   std::string why;
   if (!options.IsValid(&why)) return Status::Error(why);
   Motion m;
@@ -153,19 +160,29 @@ Status EvaluateDeviation(const RuledSurface& surface, const Cutter& cutter, cons
   InitGrid(m, options, report);
   const size_t nv = report->v.size();
   for (size_t iu = 0; iu < report->u.size(); ++iu) {
-    const double u = report->u[iu];
-    const auto [first, last] = CandidateMoves(m.move_u, u, options.neighbour_moves);
     for (size_t iv = 0; iv < nv; ++iv) {
-      const Eigen::Vector3d q = surface.Point(u, report->v[iv]);
-      double best = kInf;
-      for (int move = first; move <= last; ++move) {
-        best = std::min(best, MinOverMove(m, move, q, options.substeps));
-      }
-      report->deviation_mm[iu * nv + iv] = best;
+      const Eigen::Vector3d q = surface.Point(report->u[iu], report->v[iv]);
+      report->deviation_mm[iu * nv + iv] = least_distance(m, report->u[iu], q);
     }
   }
   Summarise(report);
   return Status::Ok();
+}
+
+}  // namespace
+
+Status EvaluateDeviation(const RuledSurface& surface, const Cutter& cutter, const ToolPath& path,
+                         const Machine& machine, const std::vector<JointVector>& joints,
+                         const DeviationOptions& options, DeviationReport* report) {
+  auto pruned = [&](const Motion& m, double u, const Eigen::Vector3d& q) {
+    const auto [first, last] = CandidateMoves(m.move_u, u, options.neighbour_moves);
+    double best = kInf;
+    for (int move = first; move <= last; ++move) {
+      best = std::min(best, MinOverMove(m, move, q, options.substeps));
+    }
+    return best;
+  };
+  return EvaluateOnGrid(surface, cutter, path, machine, joints, options, pruned, report);
 }
 
 Status EvaluateDeviationBruteForce(const RuledSurface& surface, const Cutter& cutter,
@@ -173,26 +190,17 @@ Status EvaluateDeviationBruteForce(const RuledSurface& surface, const Cutter& cu
                                    const std::vector<JointVector>& joints,
                                    const DeviationOptions& options, int substeps_per_move,
                                    DeviationReport* report) {
-  Motion m;
-  Status s = Prepare(cutter, path, machine, joints, surface, &m);
-  if (!s.ok()) return s;
-  InitGrid(m, options, report);
-  const size_t nv = report->v.size();
-  for (size_t iu = 0; iu < report->u.size(); ++iu) {
-    for (size_t iv = 0; iv < nv; ++iv) {
-      const Eigen::Vector3d q = surface.Point(report->u[iu], report->v[iv]);
-      double best = kInf;
-      for (size_t move = 0; move < m.moves.size(); ++move) {
-        for (int k = 0; k <= substeps_per_move; ++k) {
-          best = std::min(best, DistanceAt(m, static_cast<int>(move),
-                                           static_cast<double>(k) / substeps_per_move, q));
-        }
+  auto every_sample = [&](const Motion& m, double, const Eigen::Vector3d& q) {
+    double best = kInf;
+    for (size_t move = 0; move < m.moves.size(); ++move) {
+      for (int k = 0; k <= substeps_per_move; ++k) {
+        best = std::min(best, DistanceAt(m, static_cast<int>(move),
+                                         static_cast<double>(k) / substeps_per_move, q));
       }
-      report->deviation_mm[iu * nv + iv] = best;
     }
-  }
-  Summarise(report);
-  return Status::Ok();
+    return best;
+  };
+  return EvaluateOnGrid(surface, cutter, path, machine, joints, options, every_sample, report);
 }
 
 }  // namespace tpopt

@@ -20,11 +20,12 @@
 #include "model/machine.h"
 #include "solver/divided_difference.h"
 #include "solver/pose_parameters.h"
+#include "solver/pose_stencil.h"
 
 namespace tpopt {
 
 template <int kOrder>
-class AxisLimitCost {
+class AxisLimitCost : public PoseStencil<AxisLimitCost<kOrder>> {
  public:
   static_assert(kOrder >= 1 && kOrder <= 3, "velocity, acceleration or jerk");
 
@@ -37,23 +38,6 @@ class AxisLimitCost {
         kinematics_(kinematics),
         scale_(scale),
         margin_(margin) {}
-
-  template <typename T>
-  bool operator()(const T* const p0, const T* const p1, T* r) const {
-    const T* poses[] = {p0, p1};
-    return Evaluate(poses, r);
-  }
-  template <typename T>
-  bool operator()(const T* const p0, const T* const p1, const T* const p2, T* r) const {
-    const T* poses[] = {p0, p1, p2};
-    return Evaluate(poses, r);
-  }
-  template <typename T>
-  bool operator()(const T* const p0, const T* const p1, const T* const p2, const T* const p3,
-                  T* r) const {
-    const T* poses[] = {p0, p1, p2, p3};
-    return Evaluate(poses, r);
-  }
 
   static ceres::CostFunction* Create(const std::array<double, kOrder + 1>& t_s,
                                      const std::array<double, 5>& limits,
@@ -70,7 +54,7 @@ class AxisLimitCost {
     }
   }
 
- private:
+  // Residuals from the k + 1 poses (PoseStencil calls this).
   template <typename T>
   bool Evaluate(const T* const* poses, T* r) const {
     Eigen::Matrix<T, 5, 1> derivative = Eigen::Matrix<T, 5, 1>::Zero();
@@ -87,6 +71,7 @@ class AxisLimitCost {
     return true;
   }
 
+ private:
   std::array<double, kOrder + 1> weights_;
   std::array<double, 5> limits_;
   KinematicParams kinematics_;

@@ -22,11 +22,12 @@
 
 #include "solver/divided_difference.h"
 #include "solver/pose_parameters.h"
+#include "solver/pose_stencil.h"
 
 namespace tpopt {
 
 template <int kOrder>
-class SmoothnessCost {
+class SmoothnessCost : public PoseStencil<SmoothnessCost<kOrder>> {
  public:
   static_assert(kOrder == 2 || kOrder == 3, "second or third derivative");
 
@@ -37,18 +38,6 @@ class SmoothnessCost {
     const double h = (s_mm[kOrder] - s_mm[0]) / kOrder;
     angle_scale_ = std::sqrt(w_angle * h / path_length_mm);
     tip_scale_ = std::sqrt(w_tip * h / path_length_mm);
-  }
-
-  template <typename T>
-  bool operator()(const T* const p0, const T* const p1, const T* const p2, T* r) const {
-    const T* poses[] = {p0, p1, p2};
-    return Evaluate(poses, r);
-  }
-  template <typename T>
-  bool operator()(const T* const p0, const T* const p1, const T* const p2, const T* const p3,
-                  T* r) const {
-    const T* poses[] = {p0, p1, p2, p3};
-    return Evaluate(poses, r);
   }
 
   static ceres::CostFunction* Create(const std::array<double, kOrder + 1>& s_mm,
@@ -63,7 +52,7 @@ class SmoothnessCost {
     }
   }
 
- private:
+  // Residuals from the k + 1 poses (PoseStencil calls this).
   template <typename T>
   bool Evaluate(const T* const* poses, T* r) const {
     for (int d = 0; d < kPoseSize; ++d) {
@@ -74,6 +63,7 @@ class SmoothnessCost {
     return true;
   }
 
+ private:
   std::array<double, kOrder + 1> weights_;
   double angle_scale_ = 0.0;
   double tip_scale_ = 0.0;
