@@ -74,3 +74,6 @@ DEFINE_bool(insert_transitions, false, "spline: insert a transition pose in ever
 DEFINE_bool(schedule_feed, true,
             "smooth: lower the feed move by move where an axis would still exceed its velocity, "
             "acceleration or jerk limit (solver/feed_scheduler.h).");
+DEFINE_double(resample_step_mm, 0.0,
+              "smooth: resample the output with cubic splines through the tip and A, C at this "
+              "arc-length step, mm (0 keeps the input's poses).");

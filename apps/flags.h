@@ -62,4 +62,5 @@ DECLARE_int32(zone_padding);
 DECLARE_bool(insert_transitions);
 DECLARE_bool(smooth_outside_zones);
 DECLARE_bool(schedule_feed);
+DECLARE_double(resample_step_mm);
 #endif  // TPOPT_APPS_FLAGS_H_

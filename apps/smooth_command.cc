@@ -31,9 +31,14 @@ int RunSmooth(const Invocation& invocation) {
   SmoothingSettings settings;
   settings.mode = FLAGS_mode == "spline" ? SmoothingMode::kSpline : SmoothingMode::kHighAccuracy;
   settings.schedule_feed = FLAGS_schedule_feed;
+  settings.resample_step_mm = FLAGS_resample_step_mm;
   settings.feed.default_feed_mm_per_min = FLAGS_feed;
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
   if (s.ok()) s = SmootherOptionsFromFlags(&settings.spline, &settings.high_accuracy);
+  if (s.ok() && !(FLAGS_resample_step_mm >= 0)) {
+    s = Status::Error("--resample_step_mm=" + std::to_string(FLAGS_resample_step_mm) +
+                      " must be >= 0");
+  }
   if (!s.ok()) return Fail(kExitUsage, s.message());
 
   Job job;

@@ -47,6 +47,12 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                   failure);
     }
   }
+  if (settings.resample_step_mm > 0) {
+    ResampleOptions resample;
+    resample.step_mm = settings.resample_step_mm;
+    s = ResamplePath(result->output, *job.machine, resample, &result->output);
+    if (!s.ok()) return Fail(SmoothingFailure::kBadInput, "resampling: " + s.message(), failure);
+  }
   s = evaluate(result->output, &result->output_at_input_feed);
   if (!s.ok()) {
     return Fail(SmoothingFailure::kSolver,

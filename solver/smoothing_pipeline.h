@@ -1,7 +1,7 @@
 // The whole smoothing job, shared by `tpopt smooth` and the quality
 // benchmark: metrics of the input; the spline method (the output in spline
 // mode, the initial guess in high-accuracy mode with a surface; without one
-// the input itself starts the solve); the Ceres solve; the
+// the input itself starts the solve); the Ceres solve; resampling; the
 // refusal of a result worse than its start; feed scheduling; metrics of the
 // output.
 #ifndef TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
@@ -12,6 +12,7 @@
 #include "model/path_metrics.h"
 #include "solver/ceres_smoother.h"
 #include "solver/feed_scheduler.h"
+#include "solver/resample.h"
 #include "solver/spline_smoother.h"
 
 namespace tpopt {
@@ -29,6 +30,9 @@ struct SmoothingSettings {
   SmoothingMode mode = SmoothingMode::kHighAccuracy;
   SplineSmootherOptions spline;
   HighAccuracyOptions high_accuracy;
+  // Resample the smoothed path at this arc-length step, mm (0: keep the
+  // input's poses). The output metrics are those of the resampled path.
+  double resample_step_mm = 0.0;
   bool schedule_feed = true;
   FeedScheduleOptions feed;
   DeviationOptions deviation;

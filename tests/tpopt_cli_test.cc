@@ -158,6 +158,26 @@ TEST(TpoptCliTest, SmoothWritesPathAndSideBySideReport) {
   }
 }
 
+TEST(TpoptCliTest, SmoothResamplesTheOutputAndReportsTheResampledPath) {
+  TempDir dir;
+  const std::string cam = dir.File("cam.cls"), out = dir.File("out.cls"), rep = dir.File("r.json");
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + kBlade +
+                             " --cutter_radius=4 --poses=80 --uv_distortion=0.03 --out=" + cam))
+                .exit_code,
+            0);
+  const auto r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + out + " --surface=" + kBlade +
+                                  " --mode=high_accuracy --quiet --resample_step_mm=0.25"
+                                  " --report=" + rep));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = ReadJson(rep);
+  EXPECT_EQ(j["poses_in"], 80);
+  const double length = j["output"]["path_length_mm"].get<double>();
+  // One pose per 0.25 mm or less of the (smoothed) tip path, plus the end.
+  EXPECT_GE(j["poses_out"].get<int>(), static_cast<int>(length / 0.25));
+  EXPECT_EQ(j["output"]["poses"], j["poses_out"]);
+  EXPECT_LT(j["output"]["max_overcut_mm"].get<double>(), 0.02);
+}
+
 TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
   TempDir dir;
   const std::string out = dir.File("out.cls");
