@@ -63,13 +63,15 @@ std::array<double, kCount> Window(const std::vector<double>& v, size_t first) {
 // the given distances (mm along rail 0) either side: a cylinder that holds
 // its own ruling can still cut into rulings a millimetre or two away where
 // the surface twists, whatever the pose spacing.
+// Guards sit at the ruling's ends and middle only: a cylinder crossing the
+// twisted surface does so along its whole length, so three heights see it,
+// and they cost a third of guarding every contact height.
 DeviationCost::Points RulingPoints(const RuledSurface& surface, double u,
                                    const std::vector<double>& guard_mm, int samples) {
   const double speed_mm = std::max(surface.rail(0).Evaluate(u, 1)[1].norm(), 1e-9);
   DeviationCost::Points points;
-  for (int k = 0; k < samples; ++k) {
-    const double v = k / (samples - 1.0);
-    points.contact_w.push_back(surface.Point(u, v));
+  for (int k = 0; k < samples; ++k) points.contact_w.push_back(surface.Point(u, k / (samples - 1.0)));
+  for (double v : {0.0, 0.5, 1.0}) {
     for (double d : guard_mm) {
       for (double side : {-1.0, 1.0}) {
         const double ug = u + side * d / speed_mm;
