@@ -71,7 +71,8 @@ struct HighAccuracyOptions {
   int max_iterations = 100;
   // Ceres' relative cost-change stop.
   double function_tolerance = 1e-9;
-  // Jacobian evaluation threads; the result does not depend on it (tested).
+  // Jacobian evaluation threads. Runs with the same count give the same
+  // result (tested); a different count may differ in the last digits.
   int num_threads = 2;
   // Print one line per iteration on stderr.
   bool progress = true;
