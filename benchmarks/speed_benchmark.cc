@@ -1,0 +1,128 @@
+// Google Benchmark timings: the high-accuracy solve and the spline method
+// at growing pose counts (one impeller blade sampled ever more finely, with
+// the CAM-like U/V distortion), the deviation evaluator, the kinematics per
+// pose and the APT reader per megabyte.
+//
+//   ./build/benchmarks/speed_benchmark --benchmark_repetitions=3
+//   (add --benchmark_report_aggregates_only=true for medians only)
+#include <sstream>
+
+#include <benchmark/benchmark.h>
+
+#include "model/apt_io.h"
+#include "model/deviation.h"
+#include "model/json_io.h"
+#include "model/path_generator.h"
+#include "solver/ceres_smoother.h"
+#include "solver/spline_smoother.h"
+
+namespace tpopt {
+namespace {
+
+struct Blade {
+  RuledSurface surface;
+  Machine machine;
+};
+
+const Blade& SharedBlade() {
+  static const Blade blade = [] {
+    Blade b;
+    const std::string data = std::string(TPOPT_SOURCE_DIR) + "/data/";
+    ReadSurfaceJson(data + "surfaces/impeller_blade.json", &b.surface);
+    ReadMachineJson(data + "machines/jcde2022_ac.json", &b.machine);
+    return b;
+  }();
+  return blade;
+}
+
+ToolPath DistortedPath(int poses) {
+  FlankPathOptions g;
+  g.poses = poses;
+  g.uv_distortion = 0.03;
+  ToolPath path;
+  GenerateFlankPath(SharedBlade().surface, g, &path);
+  return path;
+}
+
+void BM_HighAccuracy(benchmark::State& state) {
+  const Blade& b = SharedBlade();
+  const ToolPath path = DistortedPath(static_cast<int>(state.range(0)));
+  ToolPath guess;
+  SplineSmootherReport spline_report;
+  SmoothWithSplines(path, b.machine, &b.surface, *path.cutter, SplineSmootherOptions(), &guess,
+                    &spline_report);
+  HighAccuracyOptions options;
+  options.progress = false;
+  for (auto _ : state) {
+    ToolPath out;
+    HighAccuracyReport report;
+    const SmoothingInputs inputs{&path, &guess, &b.surface, &*path.cutter, &b.machine};
+    SmoothHighAccuracy(inputs, options, &out, &report);
+    state.counters["iterations"] = report.iterations;
+  }
+  state.counters["poses/s"] =
+      benchmark::Counter(static_cast<double>(state.range(0)), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_HighAccuracy)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_Spline(benchmark::State& state) {
+  const Blade& b = SharedBlade();
+  const ToolPath path = DistortedPath(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    ToolPath out;
+    SplineSmootherReport report;
+    SmoothWithSplines(path, b.machine, nullptr, *path.cutter, SplineSmootherOptions(), &out,
+                      &report);
+    benchmark::DoNotOptimize(out.poses.data());
+  }
+  state.counters["poses/s"] = benchmark::Counter(
+      static_cast<double>(state.range(0)) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Spline)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void BM_Deviation(benchmark::State& state) {
+  const Blade& b = SharedBlade();
+  const ToolPath path = DistortedPath(static_cast<int>(state.range(0)));
+  std::vector<JointVector> joints;
+  b.machine.AssignJoints(path, &joints);
+  for (auto _ : state) {
+    DeviationReport report;
+    EvaluateDeviation(b.surface, *path.cutter, path, b.machine, joints, DeviationOptions(),
+                      &report);
+    benchmark::DoNotOptimize(report.max_overcut_mm);
+  }
+}
+BENCHMARK(BM_Deviation)->Arg(300)->Arg(3000)->Unit(benchmark::kMillisecond);
+
+void BM_KinematicsPerPose(benchmark::State& state) {
+  const Machine& m = SharedBlade().machine;
+  const Eigen::Vector3d p(10, 20, 5);
+  double a = 0.3;
+  for (auto _ : state) {
+    const JointVector j = m.ToJoints(p, a, 0.7);
+    Eigen::Vector3d back, axis;
+    m.ToWorkpiece(j, &back, &axis);
+    benchmark::DoNotOptimize(back);
+    a += 1e-9;
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_KinematicsPerPose);
+
+void BM_AptRead(benchmark::State& state) {
+  const std::string text = FormatApt(DistortedPath(100000));
+  for (auto _ : state) {
+    std::istringstream in(text);
+    ToolPath path;
+    std::vector<std::string> warnings;
+    ReadAptStream(in, "bench.cls", &path, &warnings);
+    benchmark::DoNotOptimize(path.poses.data());
+  }
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * text.size()));
+}
+BENCHMARK(BM_AptRead)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace tpopt
+
+BENCHMARK_MAIN();
