@@ -4,8 +4,6 @@
 #include <cmath>
 #include <sstream>
 
-#include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
 namespace tpopt {
 namespace {
@@ -56,36 +54,62 @@ Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<doub
     return Status::Ok();
   }
   // Q (n x m) and R (m x m), m = n - 2 interior knots; column j of Q is
-  // knot j + 1.
+  // knot j + 1 and has three entries, at rows j, j + 1, j + 2. The system
+  // R + lambda Q^T W^-1 Q is symmetric pentadiagonal: assemble its three
+  // diagonals directly and factor it by banded LDL^T, O(n) with no fill.
   const int m = n - 2;
-  std::vector<Eigen::Triplet<double>> q_triplets, r_triplets;
-  for (int j = 0; j < m; ++j) {
-    q_triplets.emplace_back(j, j, 1.0 / h[j]);
-    q_triplets.emplace_back(j + 1, j, -1.0 / h[j] - 1.0 / h[j + 1]);
-    q_triplets.emplace_back(j + 2, j, 1.0 / h[j + 1]);
-    r_triplets.emplace_back(j, j, (h[j] + h[j + 1]) / 3.0);
-    if (j + 1 < m) {
-      r_triplets.emplace_back(j, j + 1, h[j + 1] / 6.0);
-      r_triplets.emplace_back(j + 1, j, h[j + 1] / 6.0);
-    }
-  }
-  Eigen::SparseMatrix<double> q(n, m), r(m, m);
-  q.setFromTriplets(q_triplets.begin(), q_triplets.end());
-  r.setFromTriplets(r_triplets.begin(), r_triplets.end());
-  Eigen::VectorXd w_inv(n);
+  std::vector<double> q0(m), q1(m), q2(m), w_inv(n);
   for (int i = 0; i < n; ++i) w_inv[i] = weights.empty() ? 1.0 : 1.0 / weights[i];
-  const Eigen::Map<const Eigen::VectorXd> y_vec(y.data(), n);
-  const Eigen::SparseMatrix<double> system =
-      r + lambda * Eigen::SparseMatrix<double>(q.transpose() * w_inv.asDiagonal() * q);
-  // Banded and positive definite: a natural-ordered LDLT stays O(n).
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower,
-                        Eigen::NaturalOrdering<int>> solver(system);
-  if (solver.info() != Eigen::Success) {
-    return Status::Error("smoothing spline: the banded system is singular");
+  for (int j = 0; j < m; ++j) {
+    q0[j] = 1.0 / h[j];
+    q1[j] = -1.0 / h[j] - 1.0 / h[j + 1];
+    q2[j] = 1.0 / h[j + 1];
   }
-  const Eigen::VectorXd gamma = solver.solve(q.transpose() * y_vec);
-  const Eigen::VectorXd f = y_vec - lambda * (w_inv.asDiagonal() * (q * gamma));
-  out->f_.assign(f.data(), f.data() + n);
+  std::vector<double> d0(m), d1(m, 0.0), d2(m, 0.0), rhs(m);
+  for (int j = 0; j < m; ++j) {
+    d0[j] = (h[j] + h[j + 1]) / 3.0 +
+            lambda * (q0[j] * q0[j] * w_inv[j] + q1[j] * q1[j] * w_inv[j + 1] +
+                      q2[j] * q2[j] * w_inv[j + 2]);
+    if (j + 1 < m) {
+      d1[j] = h[j + 1] / 6.0 +
+              lambda * (q1[j] * q0[j + 1] * w_inv[j + 1] + q2[j] * q1[j + 1] * w_inv[j + 2]);
+    }
+    if (j + 2 < m) d2[j] = lambda * q2[j] * q0[j + 2] * w_inv[j + 2];
+    rhs[j] = q0[j] * y[j] + q1[j] * y[j + 1] + q2[j] * y[j + 2];
+  }
+  // LDL^T of the pentadiagonal matrix: L has unit diagonal and two
+  // subdiagonals l1, l2; D is diagonal.
+  std::vector<double> dd(m), l1(m, 0.0), l2(m, 0.0);
+  for (int j = 0; j < m; ++j) {
+    double diag = d0[j];
+    if (j >= 1) diag -= l1[j - 1] * l1[j - 1] * dd[j - 1];
+    if (j >= 2) diag -= l2[j - 2] * l2[j - 2] * dd[j - 2];
+    if (!(diag > 0)) return Status::Error("smoothing spline: the banded system is singular");
+    dd[j] = diag;
+    if (j + 1 < m) {
+      double off = d1[j];
+      if (j >= 1) off -= l2[j - 1] * l1[j - 1] * dd[j - 1];
+      l1[j] = off / diag;
+    }
+    if (j + 2 < m) l2[j] = d2[j] / diag;
+  }
+  std::vector<double> gamma(rhs);
+  for (int j = 0; j < m; ++j) {  // L z = rhs
+    if (j >= 1) gamma[j] -= l1[j - 1] * gamma[j - 1];
+    if (j >= 2) gamma[j] -= l2[j - 2] * gamma[j - 2];
+  }
+  for (int j = 0; j < m; ++j) gamma[j] /= dd[j];
+  for (int j = m - 1; j >= 0; --j) {  // L^T x = z / D
+    if (j + 1 < m) gamma[j] -= l1[j] * gamma[j + 1];
+    if (j + 2 < m) gamma[j] -= l2[j] * gamma[j + 2];
+  }
+  // f = y - lambda W^-1 Q gamma.
+  out->f_ = y;
+  for (int j = 0; j < m; ++j) {
+    out->f_[j] -= lambda * w_inv[j] * q0[j] * gamma[j];
+    out->f_[j + 1] -= lambda * w_inv[j + 1] * q1[j] * gamma[j];
+    out->f_[j + 2] -= lambda * w_inv[j + 2] * q2[j] * gamma[j];
+  }
   for (int j = 0; j < m; ++j) out->gamma_[j + 1] = gamma[j];
   return Status::Ok();
 }
@@ -107,7 +131,8 @@ Status SmoothingSpline::FitWithinTolerance(const std::vector<double>& s,
   SmoothingSpline best;
   Status st = Fit(s, y, weights, 0.0, &best);
   if (!st.ok()) return st;
-  for (int iter = 0; iter < 30; ++iter) {
+  // 18 halvings of 14 decades: the smoothing is found to within 0.02 %.
+  for (int iter = 0; iter < 18; ++iter) {
     const double mid = 0.5 * (lo + hi);
     SmoothingSpline trial;
     st = Fit(s, y, weights, std::pow(10.0, mid), &trial);
