@@ -39,7 +39,11 @@ Status ParseFile(const std::string& path, json* out) {
 Status Number(const json& j, const std::string& what, double* out) {
   if (!j.is_number()) return Status::Error(what + " must be a number, got " + j.dump());
   *out = j.get<double>();
-  if (!std::isfinite(*out)) return Status::Error(what + " is not finite");
+  // Geometry beyond a kilometre is a corrupt file, and squaring 1e308
+  // overflows every distance computed from it.
+  if (!std::isfinite(*out) || std::abs(*out) > 1e6) {
+    return Status::Error(what + " = " + j.dump() + " is out of range (|v| <= 1e6)");
+  }
   return Status::Ok();
 }
 

@@ -90,6 +90,10 @@ TEST_F(JsonIoTest, BadSurfacesNameFileAndPlace) {
                    ", {\"degree\": 1, \"knots\": [0, 0, 1, 1], \"control_points\": "
                    "[[0,0,1],[1,\"x\",1]]}]}");
   EXPECT_NE(e.find("control_points[1][1] must be a number"), std::string::npos) << e;
+  e = SurfaceError("{\"rails\": [" + rail +
+                   ", {\"degree\": 1, \"knots\": [0, 0, 1, 1], \"control_points\": "
+                   "[[0,0,1],[1e308,0,1]]}]}");
+  EXPECT_NE(e.find("control_points[1][0] = 1e+308 is out of range"), std::string::npos) << e;
   e = SurfaceError("{\"kind\": \"nurbs\", \"rails\": []}");
   EXPECT_NE(e.find("kind \"nurbs\""), std::string::npos) << e;
   e = SurfaceError("{\"cutter_side\": \"left\", \"rails\": [" + rail + "," + rail + "]}");
