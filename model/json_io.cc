@@ -124,27 +124,36 @@ Status AxisFromJson(const json& j, const std::string& what, double scale, AxisLi
   return Status::Ok();
 }
 
-}  // namespace
+// j[key] as a string, `fallback` when absent; an error when not a string.
+Status StringOr(const json& j, const std::string& key, const std::string& what,
+                const std::string& fallback, std::string* out) {
+  if (!j.contains(key)) {
+    *out = fallback;
+    return Status::Ok();
+  }
+  if (!j[key].is_string()) return Status::Error(what + "." + key + " must be a string, got " + j[key].dump());
+  *out = j[key].get<std::string>();
+  return Status::Ok();
+}
 
-Status ReadSurfaceJson(const std::string& path, RuledSurface* surface) {
-  json j;
-  Status s = ParseFile(path, &j);
+Status SurfaceFromJson(const std::string& path, const json& j, RuledSurface* surface) {
+  std::string kind, units, side_name, name;
+  Status s = StringOr(j, "kind", path + ": surface", "ruled", &kind);
+  if (s.ok()) s = StringOr(j, "units", path + ": surface", "mm", &units);
+  if (s.ok()) s = StringOr(j, "cutter_side", path + ": surface", "positive", &side_name);
+  if (s.ok()) s = StringOr(j, "name", path + ": surface", path, &name);
   if (!s.ok()) return s;
-  if (j.value("kind", std::string("ruled")) != "ruled") {
-    return Status::Error(path + ": kind " + j["kind"].dump() + " is not supported (\"ruled\")");
+  if (kind != "ruled") {
+    return Status::Error(path + ": kind \"" + kind + "\" is not supported (\"ruled\")");
   }
-  if (j.contains("units") && j["units"] != "mm") {
-    return Status::Error(path + ": units " + j["units"].dump() + " are not supported (\"mm\")");
+  if (units != "mm") {
+    return Status::Error(path + ": units \"" + units + "\" are not supported (\"mm\")");
   }
-  CutterSide side = CutterSide::kPositive;
-  if (j.contains("cutter_side")) {
-    if (j["cutter_side"] == "negative") {
-      side = CutterSide::kNegative;
-    } else if (j["cutter_side"] != "positive") {
-      return Status::Error(path + ": cutter_side " + j["cutter_side"].dump() +
-                           " must be \"positive\" or \"negative\"");
-    }
+  if (side_name != "positive" && side_name != "negative") {
+    return Status::Error(path + ": cutter_side \"" + side_name +
+                         "\" must be \"positive\" or \"negative\"");
   }
+  const CutterSide side = side_name == "negative" ? CutterSide::kNegative : CutterSide::kPositive;
   if (!j.contains("rails") || !j["rails"].is_array() || j["rails"].size() != 2) {
     return Status::Error(path + ": rails must be an array of exactly two curves");
   }
@@ -153,23 +162,20 @@ Status ReadSurfaceJson(const std::string& path, RuledSurface* surface) {
     s = Rail(j["rails"][i], path + ": rails[" + std::to_string(i) + "]", &rails[i]);
     if (!s.ok()) return s;
   }
-  const std::string name = j.contains("name") && j["name"].is_string() ? j["name"].get<std::string>()
-                                                                        : path;
   *surface = RuledSurface(name, rails[0], rails[1], side);
   return Status::Ok();
 }
 
-Status ReadMachineJson(const std::string& path, Machine* machine) {
-  json j;
-  Status s = ParseFile(path, &j);
-  if (!s.ok()) return s;
-  if (j.value("kinematics", std::string()) != "xyzac-trt") {
-    return Status::Error(path + ": kinematics " +
-                         (j.contains("kinematics") ? j["kinematics"].dump() : "(absent)") +
-                         " is not supported (\"xyzac-trt\")");
-  }
+Status MachineFromJson(const std::string& path, const json& j, Machine* machine) {
+  std::string kinematics;
   Machine m;
-  m.name = j.contains("name") && j["name"].is_string() ? j["name"].get<std::string>() : path;
+  Status s = StringOr(j, "kinematics", path + ": machine", "(absent)", &kinematics);
+  if (s.ok()) s = StringOr(j, "name", path + ": machine", path, &m.name);
+  if (!s.ok()) return s;
+  if (kinematics != "xyzac-trt") {
+    return Status::Error(path + ": kinematics \"" + kinematics +
+                         "\" is not supported (\"xyzac-trt\")");
+  }
   if (j.contains("rotary_pivot")) {
     s = Point(j["rotary_pivot"], path + ": rotary_pivot", &m.kinematics.rotary_pivot_mm);
     if (!s.ok()) return s;
@@ -193,6 +199,30 @@ Status ReadMachineJson(const std::string& path, Machine* machine) {
   }
   *machine = m;
   return Status::Ok();
+}
+
+// Parses and converts; any type surprise nlohmann still raises is turned
+// into a status naming the file instead of escaping the library.
+template <typename Value, typename Convert>
+Status ReadJsonFile(const std::string& path, Convert convert, Value* value) {
+  json j;
+  Status s = ParseFile(path, &j);
+  if (!s.ok()) return s;
+  try {
+    return convert(path, j, value);
+  } catch (const json::exception& e) {
+    return Status::Error(path + ": unexpected JSON content (" + e.what() + ")");
+  }
+}
+
+}  // namespace
+
+Status ReadSurfaceJson(const std::string& path, RuledSurface* surface) {
+  return ReadJsonFile(path, SurfaceFromJson, surface);
+}
+
+Status ReadMachineJson(const std::string& path, Machine* machine) {
+  return ReadJsonFile(path, MachineFromJson, machine);
 }
 
 }  // namespace tpopt

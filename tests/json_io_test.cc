@@ -94,6 +94,12 @@ TEST_F(JsonIoTest, BadSurfacesNameFileAndPlace) {
                    ", {\"degree\": 1, \"knots\": [0, 0, 1, 1], \"control_points\": "
                    "[[0,0,1],[1e308,0,1]]}]}");
   EXPECT_NE(e.find("control_points[1][0] = 1e+308 is out of range"), std::string::npos) << e;
+  // Found by the fuzzer: a number where a string belongs once escaped as an
+  // exception.
+  e = SurfaceError("{\"kind\": 3, \"rails\": []}");
+  EXPECT_NE(e.find("s.json: surface.kind must be a string, got 3"), std::string::npos) << e;
+  e = MachineError("{\"kinematics\": [1]}");
+  EXPECT_NE(e.find("m.json: machine.kinematics must be a string"), std::string::npos) << e;
   e = SurfaceError("{\"kind\": \"nurbs\", \"rails\": []}");
   EXPECT_NE(e.find("kind \"nurbs\""), std::string::npos) << e;
   e = SurfaceError("{\"cutter_side\": \"left\", \"rails\": [" + rail + "," + rail + "]}");
