@@ -1,5 +1,7 @@
 #include "solver/smoothing_pipeline.h"
 
+#include <algorithm>
+
 #include <glog/logging.h>
 
 namespace tpopt {
@@ -17,6 +19,15 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   CHECK(job.input && job.cutter && job.machine && result && failure);
   *failure = SmoothingFailure::kNone;
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
+  const auto& poses = job.input->poses;
+  const bool cuts = std::any_of(poses.begin() + std::min<size_t>(1, poses.size()), poses.end(),
+                                [](const ToolPose& p) { return !p.rapid; });
+  if (!cuts) {
+    return Fail(SmoothingFailure::kBadInput,
+                "the path has no cutting move to smooth (" + std::to_string(poses.size()) +
+                    " poses)",
+                failure);
+  }
   auto evaluate = [&](const ToolPath& path, PathMetrics* metrics) {
     return EvaluatePath(path, *job.machine, job.surface, *job.cutter, settings.deviation,
                         settings.motion, metrics);

@@ -1,0 +1,154 @@
+// The bad-input matrix, end to end through the tpopt command: every row
+// gives a clear message and no partial output file; rows that are errors
+// give exit 1 and name the file and the line, pose or key.
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "tests/test_util.h"
+
+namespace tpopt {
+namespace {
+
+using testing::FileExists;
+using testing::RunCommand;
+using testing::SourcePath;
+using testing::TempDir;
+
+const std::string kBlade = SourcePath("data/surfaces/impeller_blade.json");
+const std::string kSim = SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+
+struct Row {
+  std::string name;       // the file the row writes
+  std::string contents;
+  std::string args;       // beyond --in/--out
+  std::string expected;   // in the message
+};
+
+class BadInputMatrixTest : public ::testing::Test {
+ protected:
+  testing::CommandResult Smooth(const std::string& in, const std::string& args) {
+    std::remove(dir_.File("out.cls").c_str());
+    std::remove(dir_.File("r.json").c_str());
+    return RunCommand(testing::TpoptBinary() + " smooth --quiet --mode=spline --in=" + in +
+                      " --out=" + dir_.File("out.cls") + " --report=" + dir_.File("r.json") + " " +
+                      args);
+  }
+  std::string Write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_.File(name)) << text;
+    return dir_.File(name);
+  }
+  TempDir dir_;
+};
+
+TEST_F(BadInputMatrixTest, ErrorsExitOneNamingTheFileAndPlaceWithNoOutput) {
+  const std::string good_rail =
+      "{\"degree\": 1, \"knots\": [0, 0, 1, 1], \"control_points\": [[0,0,0],[50,0,0]]}";
+  const Row rows[] = {
+      {"trunc.cls", "CUTTER/8\nGOTO/1,2,3\nGOTO/4,5,", "", "trunc.cls:3: GOTO needs 3 or 6"},
+      {"cont.cls", "CUTTER/8\nGOTO/1,2,3\nGOTO/4,5,$\n", "", "cont.cls:3: statement continued"},
+      {"nan.cls", "CUTTER/8\nGOTO/1,2,3\nGOTO/nan,5,6\n", "", "nan.cls:3: GOTO argument 1 'nan'"},
+      {"inf.cls", "CUTTER/8\nGOTO/1,2,3\nGOTO/4,-inf,6\n", "", "inf.cls:3: GOTO argument 2"},
+      {"huge.cls", "CUTTER/8\nGOTO/1,2,3\nGOTO/4,5,1e308\n", "", "huge.cls:3: GOTO argument 3"},
+      {"negr.cls", "TLDATA/MILL,-8,0,30\nGOTO/1,2,3\nGOTO/4,5,6\n", "", "negr.cls:1: cutter radius -4"},
+      {"zero.cls", "CUTTER/8\nGOTO/1,2,3,0,0,0\nGOTO/4,5,6\n", "", "zero.cls:2: zero-length tool axis"},
+      {"one.cls", "CUTTER/8\nGOTO/18,-4,41.7,0.97,0,0.24\n", "", "one.cls: the path has no cutting move"},
+      {"trunc.ngc", "G21 G90\nG1 X1 Y2 Z3 F100\nG1 X", "", "trunc.ngc:3: word X has no valid number"},
+      {"beyond.cls", "CUTTER/8\nGOTO/0,0,0,0,-0.9396926,-0.3420201\nGOTO/1,0,0\n",
+       "--machine=" + kSim, "pose 0 (line 2): A = "},
+      {"ok.cls", "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\n", "--cutter_radius=-4",
+       "cutter radius -4"},
+  };
+  for (const Row& row : rows) {
+    const auto r = Smooth(Write(row.name, row.contents), row.args);
+    EXPECT_EQ(r.exit_code, 1) << row.name << ": " << r.output;
+    EXPECT_NE(r.output.find(row.expected), std::string::npos) << row.name << ": " << r.output;
+    EXPECT_FALSE(FileExists(dir_.File("out.cls"))) << row.name;
+    EXPECT_FALSE(FileExists(dir_.File("r.json"))) << row.name;
+  }
+  // Surface and machine files: truncated, 1e308, non-monotone knots.
+  const std::string path = Write("p.cls", "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\n");
+  const Row files[] = {
+      {"trunc.json", "{\"rails\": [\n" + good_rail + ",\n", "--surface=", "trunc.json:3: malformed JSON"},
+      {"big.json",
+       "{\"rails\": [" + good_rail +
+           ", {\"degree\": 1, \"knots\": [0,0,1,1], \"control_points\": [[0,0,9],[1e308,0,9]]}]}",
+       "--surface=", "big.json: rails[1].control_points[1][0] = 1e+308 is out of range"},
+      {"knots.json",
+       "{\"rails\": [" + good_rail +
+           ", {\"degree\": 1, \"knots\": [0,0.6,0.4,1,1], \"control_points\": "
+           "[[0,0,9],[1,0,9],[2,0,9]]}]}",
+       "--surface=", "knots.json: rails[1]: knots decrease at index 2"},
+      {"machine.json", "{\"kinematics\": \"xyzac-trt\", \"axes\": {\"A\": {\"max_velocity\": -1}}}",
+       "--machine=", "machine.json: axes.A"},
+  };
+  for (const Row& row : files) {
+    const auto r = Smooth(path, row.args + Write(row.name, row.contents));
+    EXPECT_EQ(r.exit_code, 1) << row.name << ": " << r.output;
+    EXPECT_NE(r.output.find(row.expected), std::string::npos) << row.name << ": " << r.output;
+    EXPECT_FALSE(FileExists(dir_.File("out.cls"))) << row.name;
+  }
+}
+
+TEST_F(BadInputMatrixTest, UnwritableOutputsExitOneAndLeaveNothing) {
+  const std::string path = Write("p.cls", "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\n");
+  auto r = RunCommand(testing::TpoptBinary() + " smooth --quiet --mode=spline --in=" + path +
+                      " --out=" + dir_.File("missing/out.cls"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("missing/out.cls"), std::string::npos) << r.output;
+  // A folder where the output file should go stands in for a read-only
+  // target (root can write anywhere): the rename fails, nothing is left.
+  ASSERT_EQ(mkdir(dir_.File("taken.cls").c_str(), 0755), 0);
+  ASSERT_EQ(mkdir(dir_.File("taken.cls/x").c_str(), 0755), 0);
+  r = RunCommand(testing::TpoptBinary() + " smooth --quiet --mode=spline --in=" + path +
+                 " --out=" + dir_.File("taken.cls"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("taken.cls"), std::string::npos) << r.output;
+}
+
+// Degenerate but legal paths: no crash, a message when refused, and never a
+// partial file; both modes.
+TEST_F(BadInputMatrixTest, DegeneratePathsNeverCrashOrLeaveHalfFiles) {
+  std::string same = "CUTTER/8\n", repeated = "CUTTER/8\n", winding = "CUTTER/8\n";
+  for (int i = 0; i < 6; ++i) same += "GOTO/18,-4,41.7,0.97,0,0.24\n";
+  for (int i = 0; i < 20; ++i) {
+    const std::string g = "GOTO/" + std::to_string(18 + 0.1 * i) + ",-4,41.7,0.97,0,0.24\n";
+    repeated += g + g;
+  }
+  for (int i = 0; i <= 400; ++i) {  // C winding 11 turns at A = 20 deg
+    const double c = i * 10 * M_PI / 180, a = 20 * M_PI / 180;
+    winding += "GOTO/" + std::to_string(i * 0.1) + ",0,0," + std::to_string(std::sin(a) * std::sin(c)) +
+               "," + std::to_string(std::sin(a) * std::cos(c)) + "," + std::to_string(std::cos(a)) +
+               "\n";
+  }
+  const Row rows[] = {
+      {"two.cls", "CUTTER/8\nGOTO/18,-4,41.7,0.97,0,0.24\nGOTO/18.1,-4,41.5,0.97,0,0.24\n", "", ""},
+      {"same.cls", same, "", ""},
+      {"repeated.cls", repeated, "", ""},
+      {"pole.cls", "CUTTER/8\nGOTO/0,0,0,0,0,1\nGOTO/1,0,0,0,0,1\nGOTO/2,0,0,0.01,0,1\nGOTO/3,0,0\n",
+       "", ""},
+      {"winding.cls", winding, "", ""},
+  };
+  for (const Row& row : rows) {
+    const std::string in = Write(row.name, row.contents);
+    for (const std::string mode : {"spline", "high_accuracy"}) {
+      const std::string out = dir_.File(row.name + "_" + mode + ".out.cls");
+      const auto r = RunCommand(testing::TpoptBinary() + " smooth --quiet --mode=" + mode +
+                                " --in=" + in + " --out=" + out + " --surface=" + kBlade);
+      EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1 || r.exit_code == 3)
+          << row.name << " " << mode << ": exit " << r.exit_code << " " << r.output;
+      if (r.exit_code == 0) {
+        EXPECT_TRUE(FileExists(out)) << row.name;
+      } else {
+        EXPECT_FALSE(FileExists(out)) << row.name;
+        EXPECT_FALSE(r.output.empty()) << row.name;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tpopt
