@@ -325,8 +325,67 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   return Status::Ok();
 }
 
+namespace {
+
+// Solves a path without consecutive repeated poses (see SmoothHighAccuracy).
+Status SolveDistinct(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                     ToolPath* out, HighAccuracyReport* report);
+
+// Index of the distinct pose each pose repeats (itself when it moves).
+std::vector<size_t> DistinctIndex(const ToolPath& path) {
+  std::vector<size_t> index(path.poses.size());
+  size_t distinct = 0;
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    const bool repeat = i > 0 && !path.poses[i].rapid &&
+                        (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm() < 1e-9 &&
+                        (path.poses[i].a_w - path.poses[i - 1].a_w).norm() < 1e-12;
+    if (i > 0 && !repeat) ++distinct;
+    index[i] = distinct;
+  }
+  return index;
+}
+
+ToolPath Distinct(const ToolPath& path, const std::vector<size_t>& index) {
+  ToolPath out = path;
+  out.poses.clear();
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    if (i == 0 || index[i] != index[i - 1]) out.poses.push_back(path.poses[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
 Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
                           ToolPath* out, HighAccuracyReport* report) {
+  CHECK(inputs.input != nullptr);
+  // CAM files repeat poses; a repeat carries no motion and would give the
+  // divided differences a zero step, so the problem is solved over the
+  // distinct poses and each repeat takes its original's result.
+  const std::vector<size_t> index = DistinctIndex(*inputs.input);
+  if (index.empty() || index.back() + 1 == index.size()) {
+    return SolveDistinct(inputs, options, out, report);
+  }
+  const ToolPath input = Distinct(*inputs.input, index);
+  const ToolPath guess = Distinct(inputs.initial_guess ? *inputs.initial_guess : *inputs.input, index);
+  SmoothingInputs distinct = inputs;
+  distinct.input = &input;
+  distinct.initial_guess = &guess;
+  ToolPath solved;
+  Status s = SolveDistinct(distinct, options, &solved, report);
+  if (!s.ok()) return s;
+  *out = *inputs.input;
+  for (size_t i = 0; i < out->poses.size(); ++i) {
+    out->poses[i].p_w_tip = solved.poses[index[i]].p_w_tip;
+    out->poses[i].a_w = solved.poses[index[i]].a_w;
+  }
+  return Status::Ok();
+}
+
+namespace {
+
+Status SolveDistinct(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                     ToolPath* out, HighAccuracyReport* report) {
   std::string why;
   if (!options.IsValid(&why)) return Status::Error("high_accuracy options: " + why);
   const auto start = std::chrono::steady_clock::now();
@@ -372,5 +431,7 @@ Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptio
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
 }
+
+}  // namespace
 
 }  // namespace tpopt

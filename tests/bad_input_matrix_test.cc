@@ -140,6 +140,10 @@ TEST_F(BadInputMatrixTest, DegeneratePathsNeverCrashOrLeaveHalfFiles) {
                                 " --in=" + in + " --out=" + out + " --surface=" + kBlade);
       EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1 || r.exit_code == 3)
           << row.name << " " << mode << ": exit " << r.exit_code << " " << r.output;
+      // Repeated poses are common in CAM files and must smooth normally.
+      if (row.name == "repeated.cls") {
+        EXPECT_EQ(r.exit_code, 0) << mode << ": " << r.output;
+      }
       if (r.exit_code == 0) {
         EXPECT_TRUE(FileExists(out)) << row.name;
       } else {
