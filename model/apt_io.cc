@@ -1,6 +1,5 @@
 #include "model/apt_io.h"
 
-#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -23,6 +22,19 @@ std::string Trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
+// A plain decimal number as CAM systems write it (sign, digits, point,
+// exponent). strtod alone would also take "0x1A", "nan" and "inf", none of
+// which is a coordinate.
+bool ParseDecimal(const std::string& text, double* out) {
+  if (text.empty() ||
+      text.find_first_not_of("0123456789+-.eE") != std::string::npos) {
+    return false;
+  }
+  char* end = nullptr;
+  *out = std::strtod(text.c_str(), &end);
+  return end != text.c_str() && *end == '\0';
+}
+
 std::string Upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return s;
@@ -35,16 +47,22 @@ struct Statement {
   int line = 0;
 };
 
+// The major word of the text before '/': "TOOL PATH" is the one two-word
+// major word; otherwise the first token, so that "PARTNO BLADE 1" and
+// "INSERT G05.1 Q1" read as PARTNO and INSERT (and warn once per word).
+std::string MajorWord(const std::string& head) {
+  std::istringstream tokens(Upper(head));
+  std::string first, second;
+  tokens >> first >> second;
+  if (first == "TOOL" && second == "PATH") return "TOOL PATH";
+  return first;
+}
+
 Statement Split(const std::string& text, int line) {
   Statement st;
   st.line = line;
   const size_t slash = text.find('/');
-  std::string word = Upper(Trim(text.substr(0, slash)));
-  // Collapse inner blanks so that "TOOL  PATH" reads as "TOOL PATH".
-  word.erase(std::unique(word.begin(), word.end(),
-                         [](char a, char b) { return a == ' ' && b == ' '; }),
-             word.end());
-  st.word = word;
+  st.word = MajorWord(text.substr(0, slash));
   if (slash == std::string::npos) return st;
   std::stringstream rest(text.substr(slash + 1));
   std::string arg;
@@ -64,9 +82,11 @@ class AptReader {
       const size_t comment = line.find("$$");
       if (comment != std::string::npos) line.erase(comment);
       line = Trim(line);
-      if (line.empty() && text.empty()) continue;
+      // Blank and comment-only lines separate statements, and some posts
+      // put them between the lines of a continued one: skip them either way.
+      if (line.empty()) continue;
       if (text.empty()) first_line = n;
-      const bool continued = !line.empty() && line.back() == '$';
+      const bool continued = line.back() == '$';
       if (continued) line.pop_back();
       text += line;
       if (continued) continue;
@@ -88,9 +108,7 @@ class AptReader {
 
   Status Number(const Statement& st, size_t k, double* out) const {
     const std::string& a = st.args[k];
-    char* end = nullptr;
-    *out = std::strtod(a.c_str(), &end);
-    if (a.empty() || end == a.c_str() || *end != '\0') {
+    if (!ParseDecimal(a, out)) {
       return Error(st.line, st.word + " argument " + std::to_string(k + 1) + " '" + a +
                                 "' is not a number");
     }
@@ -213,12 +231,42 @@ Status ReadApt(const std::string& path, ToolPath* tool_path, std::vector<std::st
   return ReadAptStream(in, path, tool_path, warnings);
 }
 
+namespace {
+
+// The title on one comment line: a line break in it (a file name, a flag
+// value) would otherwise start a statement of its own.
+std::string CommentLine(const std::string& title) {
+  std::string line = title.empty() ? std::string("tpopt tool path") : title;
+  for (char& c : line) {
+    if (std::iscntrl(static_cast<unsigned char>(c))) c = ' ';
+  }
+  return "$$ " + line + "\n";
+}
+
+// What the reader would refuse: a written file must read back.
+Status CheckWritable(const std::string& path, const ToolPath& tool_path) {
+  if (tool_path.poses.empty()) return Status::Error(path + ": no poses to write");
+  for (size_t i = 0; i < tool_path.poses.size(); ++i) {
+    const ToolPose& p = tool_path.poses[i];
+    const bool in_range = p.p_w_tip.allFinite() && p.a_w.allFinite() &&
+                          p.p_w_tip.cwiseAbs().maxCoeff() <= kMaxMagnitude;
+    if (!in_range || !(p.a_w.norm() > 1e-9)) {
+      std::ostringstream err;
+      err << path << ": pose " << i << " cannot be written: tip (" << p.p_w_tip.transpose()
+          << ") mm, axis (" << p.a_w.transpose() << ")";
+      return Status::Error(err.str());
+    }
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
 std::string FormatApt(const ToolPath& tool_path) {
   std::string out;
   out.reserve(64 * tool_path.poses.size() + 256);
   char buf[256];
-  out += "$$ " + (tool_path.title.empty() ? std::string("tpopt tool path") : tool_path.title) +
-         "\n";
+  out += CommentLine(tool_path.title);
   out += "TOOL PATH/TPOPT\nUNITS/MM\nMULTAX/ON\n";
   if (tool_path.cutter) {
     std::snprintf(buf, sizeof(buf), "TLDATA/MILL,%.6f,0.000000,%.6f\n",
@@ -231,7 +279,8 @@ std::string FormatApt(const ToolPath& tool_path) {
       out += "RAPID\n";
     } else if (p.feed_mm_per_min > 0 && p.feed_mm_per_min != feed) {
       feed = p.feed_mm_per_min;
-      std::snprintf(buf, sizeof(buf), "FEDRAT/MMPM,%.6g\n", feed);
+      // Ten digits: a scheduled feed reads back as written, not rounded.
+      std::snprintf(buf, sizeof(buf), "FEDRAT/MMPM,%.10g\n", feed);
       out += buf;
     }
     std::snprintf(buf, sizeof(buf), "GOTO/%.6f,%.6f,%.6f,%.9f,%.9f,%.9f\n", p.p_w_tip.x(),
@@ -243,6 +292,8 @@ std::string FormatApt(const ToolPath& tool_path) {
 }
 
 Status WriteApt(const std::string& path, const ToolPath& tool_path) {
+  Status s = CheckWritable(path, tool_path);
+  if (!s.ok()) return s;
   return WriteFileAtomically(path, FormatApt(tool_path));
 }
 

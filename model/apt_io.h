@@ -1,5 +1,6 @@
 // APT cutter-location files: the reader accepts what real CAM systems
-// write, the writer emits a plain 5-axis CL file that reads back exactly.
+// write; the writer emits a plain 5-axis CL file that reads back to within
+// 1e-6 mm.
 //
 // Statements: GOTO/x,y,z[,i,j,k] (i,j,k modal; +Z before the first), `$` at
 // the end of a line continues the statement, `$$` starts a comment,
@@ -7,7 +8,9 @@
 // the modal feed in mm/min, RAPID makes the next GOTO a rapid; MULTAX,
 // UNITS/MM, TOOL PATH, PAINT, END-OF-PATH, FINI, PARTNO, LOADTL, SPINDL and
 // COOLNT carry nothing tpopt needs. Any other statement is skipped with one
-// warning per distinct word.
+// warning per distinct major word (its first word, or TOOL PATH). Words are
+// case-insensitive; blanks, CRLF, and blank or comment lines inside a `$`
+// continuation are tolerated. Numbers are plain decimals (no hex, NaN, Inf).
 #ifndef TPOPT_MODEL_APT_IO_H_
 #define TPOPT_MODEL_APT_IO_H_
 
@@ -31,12 +34,18 @@ Status ReadApt(const std::string& path, ToolPath* tool_path, std::vector<std::st
 Status ReadAptStream(std::istream& in, const std::string& name, ToolPath* tool_path,
                      std::vector<std::string>* warnings);
 
-// APT text: a `$$` header, UNITS/MM, MULTAX/ON, TLDATA when the cutter is
-// known, FEDRAT when the feed changes, RAPID before rapids, GOTO with 6
-// decimals of mm and 9 of the axis, END-OF-PATH and FINI.
+// APT text: a `$$` header with the title (control characters blanked),
+// UNITS/MM, MULTAX/ON, TLDATA/MILL,d,0,l when the cutter is known (taper is
+// not written), FEDRAT/MMPM (10 significant digits) when the feed changes,
+// RAPID before rapids, GOTO with 6 decimals of mm and 9 of the axis,
+// END-OF-PATH and FINI. Read back, tips agree within 1e-6 mm and axes
+// within 1e-9.
 std::string FormatApt(const ToolPath& tool_path);
 
-// Writes FormatApt atomically (model/atomic_file.h).
+// Writes FormatApt atomically (model/atomic_file.h). Refuses, writing
+// nothing, a path ReadApt would reject: no poses, or a pose (named by its
+// 0-based index) with a non-finite value, a coordinate beyond 1e6 mm or a
+// zero axis.
 Status WriteApt(const std::string& path, const ToolPath& tool_path);
 
 }  // namespace tpopt

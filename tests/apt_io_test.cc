@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/test_util.h"
+
 namespace tpopt {
 namespace {
 
@@ -44,6 +46,7 @@ TEST(AptIoTest, ReadsWhatRealCamSystemsWrite) {
       "CUTCOM/OFF\n"
       "INSERT G05.1 Q1\n"
       "GOTO/12,20,30\n"
+      "INSERT M08\n"
       "END-OF-PATH\n"
       "FINI\n";
   ToolPath path;
@@ -63,10 +66,11 @@ TEST(AptIoTest, ReadsWhatRealCamSystemsWrite) {
   EXPECT_FALSE(path.poses[3].rapid);
   EXPECT_EQ(path.poses[3].a_w, path.poses[2].a_w);
   EXPECT_EQ(path.poses[4].feed_mm_per_min, 500);
-  // One warning per unknown word: CUTCOM twice, INSERT once.
+  // One warning per unknown major word, at its first line: CUTCOM twice,
+  // INSERT twice with different text.
   ASSERT_EQ(warnings.size(), 2u);
   EXPECT_NE(warnings[0].find("p.cls:16: statement 'CUTCOM'"), std::string::npos) << warnings[0];
-  EXPECT_NE(warnings[1].find("INSERT G05.1 Q1"), std::string::npos) << warnings[1];
+  EXPECT_NE(warnings[1].find("p.cls:18: statement 'INSERT'"), std::string::npos) << warnings[1];
 }
 
 TEST(AptIoTest, NormalisesAxesAndAcceptsCutter) {
@@ -84,7 +88,16 @@ TEST(AptIoTest, BadInputNamesLineAndValue) {
   EXPECT_NE(ErrorOf("GOTO/1,abc,3\n").find("p.cls:1: GOTO argument 2 'abc' is not a number"),
             std::string::npos);
   EXPECT_NE(ErrorOf("\nGOTO/1,nan,3\n").find("p.cls:2: GOTO argument 2 'nan'"), std::string::npos);
-  EXPECT_NE(ErrorOf("GOTO/1,inf,3\n").find("out of range"), std::string::npos);
+  EXPECT_NE(ErrorOf("GOTO/1,inf,3\n").find("p.cls:1: GOTO argument 2 'inf' is not a number"),
+            std::string::npos);
+  // strtod would read hex; no CAM system writes it, so it is garbage here.
+  EXPECT_NE(ErrorOf("GOTO/0x10,2,3\n").find("p.cls:1: GOTO argument 1 '0x10' is not a number"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("GOTO/1,2,3\nGOTO/1,2,3,1,2,3,4\n").find("p.cls:2: GOTO needs 3 or 6 "
+                                                              "numbers, got 7"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("GOTO/1,2,3\nGOTO/1,2,3,1e-10,0,0\n").find("p.cls:2: zero-length tool axis"),
+            std::string::npos);
   EXPECT_NE(ErrorOf("GOTO/1e308,0,3\n").find("'1e308' is out of range"), std::string::npos);
   EXPECT_NE(ErrorOf("GOTO/1,2,3,0,0,0\n").find("p.cls:1: zero-length tool axis"),
             std::string::npos);
@@ -97,6 +110,102 @@ TEST(AptIoTest, BadInputNamesLineAndValue) {
             std::string::npos);
   EXPECT_NE(ErrorOf("FEDRAT/IPM,20\nGOTO/1,2,3\n").find("IPM"), std::string::npos);
   EXPECT_NE(ErrorOf("").find("no GOTO"), std::string::npos);
+}
+
+TEST(AptIoTest, ContinuationSkipsBlankAndCommentLines) {
+  // Some posts put a comment between the lines of a continued GOTO; the pose
+  // still belongs to the GOTO's own line.
+  ToolPath path;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(Parse("GOTO/0,0,0\n\nGOTO/1,2,$\n$$ note\n\n  3,0,$\r\n1,0\n", &path, &warnings)
+                  .ok());
+  ASSERT_EQ(path.poses.size(), 2u);
+  EXPECT_EQ(path.poses[1].p_w_tip, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(path.poses[1].a_w, Eigen::Vector3d(0, 1, 0));
+  EXPECT_EQ(path.poses[1].source_line, 3);
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST(AptIoTest, SilentWordsWithFreeTextGiveNoWarning) {
+  // PARTNO and TOOL PATH carry free text, slashes and commas included.
+  ToolPath path;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(Parse("PARTNO blade 1/2, rev B\ntool   path/FLANK,1\nLOADTL/1\nSPINDL/8000\n"
+                    "COOLNT/ON\nMULTAX\nGOTO/1,2,3\nFINI\n",
+                    &path, &warnings)
+                  .ok());
+  EXPECT_TRUE(warnings.empty()) << warnings[0];
+  EXPECT_EQ(path.poses[0].source_line, 7);
+}
+
+TEST(AptIoTest, BadFilesNameThePathAndLine) {
+  testing::TempDir dir;
+  struct Case {
+    const char* name;
+    const char* text;
+    const char* expected;  // after the full path
+  };
+  const Case cases[] = {
+      {"axis.cls", "GOTO/1,2,3\nGOTO/1,2,3,0,0,0\n", ":2: zero-length tool axis (0, 0, 0)"},
+      {"four.cls", "$$ c\nGOTO/1,2,3,4\n", ":2: GOTO needs 3 or 6 numbers, got 4"},
+      {"empty.cls", "UNITS/MM\r\nFINI\r\n", ": no GOTO"},
+      {"cont.cls", "GOTO/1,2,3\nGOTO/4,5,$\n$$ end\n", ":2: statement continued"},
+      {"inch.cls", "GOTO/1,2,3\nUNITS/INCHES\n", ":2: UNITS/INCHES is not supported"},
+      {"big.cls", "GOTO/1,2,3\nGOTO/1,2000000,3\n",
+       ":2: GOTO argument 2 '2000000' is out of range"},
+  };
+  for (const Case& c : cases) {
+    const std::string file = dir.File(c.name);
+    std::ofstream(file) << c.text;
+    ToolPath path;
+    std::vector<std::string> warnings;
+    const Status s = ReadApt(file, &path, &warnings);
+    ASSERT_FALSE(s.ok()) << c.name;
+    EXPECT_EQ(s.message().rfind(file + c.expected, 0), 0u) << s.message();
+    EXPECT_TRUE(path.poses.empty()) << c.name;  // nothing half read
+  }
+  ToolPath path;
+  const Status s = ReadApt(dir.File("missing.cls"), &path, nullptr);
+  EXPECT_EQ(s.message(), dir.File("missing.cls") + ": cannot open file");
+}
+
+TEST(AptIoTest, FormatKeepsTheTitleInItsCommentAndFeedsExact) {
+  ToolPath path;
+  path.title = "smooth of evil\nGOTO/9,9,9\r";
+  ToolPose pose;
+  pose.feed_mm_per_min = 1234.56789;
+  path.poses.push_back(pose);
+  pose.feed_mm_per_min = 1234.56789;  // unchanged: no second FEDRAT
+  pose.p_w_tip.x() = 1;
+  path.poses.push_back(pose);
+  const std::string text = FormatApt(path);
+  EXPECT_EQ(text.rfind("$$ smooth of evil GOTO/9,9,9 \n", 0), 0u) << text;
+  EXPECT_NE(text.find("FEDRAT/MMPM,1234.56789\n"), std::string::npos) << text;
+  EXPECT_EQ(text.find("FEDRAT", text.find("FEDRAT") + 1), std::string::npos) << text;
+  ToolPath back;
+  ASSERT_TRUE(Parse(text, &back, nullptr).ok());
+  ASSERT_EQ(back.poses.size(), 2u);
+  EXPECT_EQ(back.poses[0].p_w_tip, Eigen::Vector3d::Zero());
+  EXPECT_EQ(back.poses[1].feed_mm_per_min, 1234.56789);
+}
+
+TEST(AptIoTest, WriteRefusesWhatCannotBeReadBack) {
+  testing::TempDir dir;
+  ToolPath path;
+  EXPECT_NE(WriteApt(dir.File("e.cls"), path).message().find("e.cls: no poses"),
+            std::string::npos);
+  path.poses.resize(3);
+  path.poses[2].p_w_tip.y() = std::nan("");
+  Status s = WriteApt(dir.File("n.cls"), path);
+  EXPECT_NE(s.message().find("n.cls: pose 2 cannot be written"), std::string::npos)
+      << s.message();
+  path.poses[2].p_w_tip.y() = 0;
+  path.poses[1].a_w.setZero();
+  s = WriteApt(dir.File("z.cls"), path);
+  EXPECT_NE(s.message().find("z.cls: pose 1"), std::string::npos) << s.message();
+  EXPECT_FALSE(testing::FileExists(dir.File("e.cls")));
+  EXPECT_FALSE(testing::FileExists(dir.File("n.cls")));
+  EXPECT_FALSE(testing::FileExists(dir.File("z.cls")));
 }
 
 TEST(AptIoTest, RoundTripsThroughAFile) {

@@ -52,6 +52,25 @@ TEST_F(AtomicFileTest, ReplacesWholeFiles) {
   EXPECT_TRUE(st.st_mode & S_IRGRP);  // not mkstemp's private 0600
 }
 
+TEST_F(AtomicFileTest, NewFilesFollowTheUmaskAndReplacedFilesKeepTheirMode) {
+  const mode_t saved = umask(027);
+  const std::string fresh = dir_ + "/fresh.txt";
+  const Status s = WriteFileAtomically(fresh, "x");
+  umask(saved);
+  ASSERT_TRUE(s.ok()) << s.message();
+  struct stat st;
+  ASSERT_EQ(stat(fresh.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0640u);
+
+  const std::string script = dir_ + "/run.sh";
+  ASSERT_TRUE(WriteFileAtomically(script, "#!/bin/sh\n").ok());
+  ASSERT_EQ(chmod(script.c_str(), 0750), 0);
+  ASSERT_TRUE(WriteFileAtomically(script, "#!/bin/sh\nexit 0\n").ok());
+  ASSERT_EQ(stat(script.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0750u);
+  EXPECT_EQ(Slurp(script), "#!/bin/sh\nexit 0\n");
+}
+
 TEST_F(AtomicFileTest, MissingFolderFailsAndLeavesNothing) {
   const Status s = WriteFileAtomically(dir_ + "/no/such/dir/out.txt", "x");
   ASSERT_FALSE(s.ok());
