@@ -61,6 +61,11 @@ DEFINE_double(w_tip_height, 1.0, "high_accuracy: weight holding the tip at its c
 DEFINE_int32(ruling_samples, 7, "high_accuracy: deviation samples along each ruling.");
 DEFINE_int32(between_samples, 1, "high_accuracy: deviation checks inside each move.");
 DEFINE_int32(max_iterations, 100, "high_accuracy: Ceres iteration limit.");
+DEFINE_int32(coarse_poses, 250,
+             "high_accuracy: a path of more than twice this many poses is solved coarse to fine, "
+             "over every 8th pose down to about this many (0 = always solve in full).");
+DEFINE_int32(refine_iterations, 5,
+             "high_accuracy: iteration limit of the full refinement after a coarse solve.");
 DEFINE_int32(num_threads, 2, "high_accuracy: Ceres threads (the same count gives the same result).");
 DEFINE_double(spline_tolerance_deg, 0.05,
               "spline: largest A/C change the fit may make outside the abrupt zones, deg "

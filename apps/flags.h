@@ -55,6 +55,8 @@ DECLARE_double(w_tip_height);
 DECLARE_int32(ruling_samples);
 DECLARE_int32(between_samples);
 DECLARE_int32(max_iterations);
+DECLARE_int32(coarse_poses);
+DECLARE_int32(refine_iterations);
 DECLARE_int32(num_threads);
 DECLARE_double(angle_tolerance_deg);
 DECLARE_double(zone_factor);

@@ -59,6 +59,11 @@ struct HighAccuracyOptions {
   // Joint-space points between neighbouring poses checked for deviation
   // (0 = poses only).
   int between_samples = 1;
+  // Moves shorter than this (mm of contact arc length) get no between
+  // samples: on them the joint-linear motion stays within a fraction of a
+  // micrometre of the two end poses' cutters, which are checked, and a
+  // dense path would pay for the between points for nothing. >= 0.
+  double between_min_move_mm = 0.1;
   // Surface-free mode (no surface): each pose stays within tolerance_mm of
   // the original tip polyline and within this angle of the original axis
   // (solver/tolerance_band_cost.h); the band's walls weigh w_band, and
@@ -69,8 +74,15 @@ struct HighAccuracyOptions {
   // Programmed feed where the path has none, mm/min. > 0.
   double default_feed_mm_per_min = 1000.0;
   int max_iterations = 100;
+  // With a surface, paths with more than twice this many poses are solved
+  // coarse to fine (solver/coarse_to_fine.h): first over every 8th pose
+  // (recursively, down to about this many stations), then each finer level
+  // from the interpolated stations for at most refine_iterations. 0 always
+  // solves the full problem directly.
+  int coarse_poses = 250;
+  int refine_iterations = 5;
   // Ceres' relative cost-change stop.
-  double function_tolerance = 1e-9;
+  double function_tolerance = 1e-6;
   // Jacobian evaluation threads. Runs with the same count give the same
   // result (tested); a different count may differ in the last digits.
   int num_threads = 2;

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "solver/smoothing_spline.h"
+#include "solver/pose_spline.h"
 
 namespace tpopt {
 namespace {
@@ -29,13 +29,9 @@ Status ResampleRun(const ToolPath& in, const std::vector<JointVector>& joints, s
     out->poses.insert(out->poses.end(), in.poses.begin() + first, in.poses.begin() + end);
     return Status::Ok();
   }
-  SmoothingSpline fit[5];
-  for (int k = 0; k < 5; ++k) {
-    std::vector<double> y;
-    for (size_t i : kept) y.push_back(k < 3 ? in.poses[i].p_w_tip[k] : joints[i][k]);
-    Status st = SmoothingSpline::Fit(s, y, {}, 0.0, &fit[k]);
-    if (!st.ok()) return st;
-  }
+  PoseSpline fit;
+  Status st = PoseSpline::Fit(in, joints, kept, s, &fit);
+  if (!st.ok()) return st;
   const int steps = std::max(1, static_cast<int>(std::ceil(s.back() / step_mm - 1e-9)));
   size_t source = 0;  // the kept pose at or after the sample, for its feed
   for (int j = 0; j <= steps; ++j) {
@@ -45,8 +41,7 @@ Status ResampleRun(const ToolPath& in, const std::vector<JointVector>& joints, s
     if (j == 0) p = in.poses[first];
     if (j == steps) p = in.poses[kept.back()];
     if (j > 0 && j < steps) {
-      p.p_w_tip = Eigen::Vector3d(fit[0](sj), fit[1](sj), fit[2](sj));
-      p.a_w = AnglesToAxis(fit[kA](sj), fit[kC](sj));
+      fit.Evaluate(sj, &p);
       p.rapid = false;
       p.source_line = 0;
     }

@@ -1,0 +1,83 @@
+#include "solver/coarse_to_fine.h"
+
+#include <algorithm>
+
+#include <glog/logging.h>
+
+#include "solver/pose_spline.h"
+
+namespace tpopt {
+namespace {
+
+// Tip arc length along `path`, each step at least `floor_mm` so that a
+// pose that only turns the axis still gets its own parameter.
+std::vector<double> TipArcLength(const ToolPath& path) {
+  const size_t n = path.poses.size();
+  std::vector<double> s(n, 0.0);
+  if (n < 2) return s;
+  double total = 0.0;
+  for (size_t i = 1; i < n; ++i) total += (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
+  const double floor_mm = std::max(1e-9, 1e-6 * total / static_cast<double>(n - 1));
+  for (size_t i = 1; i < n; ++i) {
+    const double ds = (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
+    s[i] = s[i - 1] + std::max(ds, floor_mm);
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<size_t> CoarseStations(const ToolPath& path, size_t target) {
+  const size_t n = path.poses.size();
+  const size_t stride = std::max<size_t>(1, (n + std::max<size_t>(target, 1) - 1) / std::max<size_t>(target, 1));
+  std::vector<size_t> stations;
+  for (size_t i = 0; i < n; ++i) {
+    const bool run_end = i + 1 == n || path.poses[i + 1].rapid;
+    if (i == 0 || i % stride == 0 || path.poses[i].rapid || run_end) stations.push_back(i);
+  }
+  return stations;
+}
+
+ToolPath SubPath(const ToolPath& path, const std::vector<size_t>& indices) {
+  ToolPath out = path;
+  out.poses.clear();
+  out.poses.reserve(indices.size());
+  for (size_t i : indices) out.poses.push_back(path.poses[i]);
+  return out;
+}
+
+Status InterpolateStations(const ToolPath& fine, const std::vector<size_t>& stations,
+                           const ToolPath& coarse, const Machine& machine, ToolPath* out) {
+  CHECK_EQ(stations.size(), coarse.poses.size());
+  std::vector<JointVector> joints;
+  Status st = machine.AssignJoints(coarse, &joints);
+  if (!st.ok()) return st;
+  const std::vector<double> s = TipArcLength(fine);
+  ToolPath result = fine;
+  // Each run [first, last] of the fine path starts and ends at a station.
+  for (size_t j = 0; j < stations.size();) {
+    size_t k = j + 1;
+    while (k < stations.size() && !fine.poses[stations[k]].rapid) ++k;
+    std::vector<size_t> members;
+    std::vector<double> knots;
+    for (size_t m = j; m < k; ++m) {
+      members.push_back(m);
+      knots.push_back(s[stations[m]]);
+    }
+    if (members.size() >= 2) {
+      PoseSpline spline;
+      st = PoseSpline::Fit(coarse, joints, members, knots, &spline);
+      if (!st.ok()) return st;
+      for (size_t i = stations[j]; i <= stations[k - 1]; ++i) spline.Evaluate(s[i], &result.poses[i]);
+    }
+    for (size_t m = j; m < k; ++m) {
+      result.poses[stations[m]].p_w_tip = coarse.poses[m].p_w_tip;
+      result.poses[stations[m]].a_w = coarse.poses[m].a_w;
+    }
+    j = k;
+  }
+  *out = std::move(result);
+  return Status::Ok();
+}
+
+}  // namespace tpopt

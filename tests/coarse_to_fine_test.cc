@@ -1,0 +1,120 @@
+// Coarse-to-fine solve: station choice, exact interpolation of what a
+// natural cubic spline can represent, and the same optimum as the direct
+// solve on a dense path.
+#include "solver/coarse_to_fine.h"
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "model/json_io.h"
+#include "model/path_generator.h"
+#include "model/path_metrics.h"
+#include "solver/ceres_smoother.h"
+#include "solver/spline_smoother.h"
+#include "tests/test_util.h"
+
+namespace tpopt {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+// Poses at tip arc length s = 0.1 i along x, A and C linear in s, with a
+// rapid to a second run at pose 37.
+ToolPath LinearPath(int n) {
+  ToolPath path;
+  path.cutter = Cutter{4.0, 30.0, 0.0};
+  for (int i = 0; i < n; ++i) {
+    const double s = 0.1 * i;
+    ToolPose p;
+    p.p_w_tip = Eigen::Vector3d(s, 2.0, -1.0);
+    p.a_w = AnglesToAxis((20.0 + 0.5 * s) * kDeg, (-30.0 + 2.0 * s) * kDeg);
+    p.rapid = i == 37;
+    path.poses.push_back(p);
+  }
+  return path;
+}
+
+TEST(CoarseStationsTest, KeepsRunEndsRapidTargetsAndEveryStridePose) {
+  const ToolPath path = LinearPath(100);
+  const std::vector<size_t> stations = CoarseStations(path, 10);  // stride 10
+  auto has = [&](size_t i) {
+    return std::find(stations.begin(), stations.end(), i) != stations.end();
+  };
+  EXPECT_TRUE(has(0));
+  EXPECT_TRUE(has(36));  // the run's last pose
+  EXPECT_TRUE(has(37));  // the rapid target
+  EXPECT_TRUE(has(99));
+  for (size_t i = 0; i < 100; i += 10) EXPECT_TRUE(has(i)) << i;
+  EXPECT_EQ(stations.size(), 13u);  // 0..90 by 10, 36, 37, 99
+  EXPECT_TRUE(std::is_sorted(stations.begin(), stations.end()));
+  // Every move of the subpath keeps its kind: only 37 arrives by rapid.
+  const ToolPath sub = SubPath(path, stations);
+  for (size_t j = 0; j < stations.size(); ++j) {
+    EXPECT_EQ(sub.poses[j].rapid, stations[j] == 37) << j;
+  }
+}
+
+TEST(InterpolateStationsTest, ReproducesPosesLinearInArcLength) {
+  Machine machine;
+  ASSERT_TRUE(
+      ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &machine).ok());
+  const ToolPath fine = LinearPath(100);
+  const std::vector<size_t> stations = CoarseStations(fine, 12);
+  // Shift every fine pose (which keeps the arc length): the result must
+  // come from the stations alone.
+  ToolPath shifted = fine;
+  for (ToolPose& p : shifted.poses) p.p_w_tip.y() += 5.0;
+  const ToolPath coarse = SubPath(fine, stations);
+  ToolPath out;
+  ASSERT_TRUE(InterpolateStations(shifted, stations, coarse, machine, &out).ok());
+  ASSERT_EQ(out.poses.size(), fine.poses.size());
+  for (size_t i = 0; i < fine.poses.size(); ++i) {
+    EXPECT_LT((out.poses[i].p_w_tip - fine.poses[i].p_w_tip).norm(), 1e-9) << i;
+    EXPECT_LT((out.poses[i].a_w - fine.poses[i].a_w).norm(), 1e-9) << i;
+    EXPECT_EQ(out.poses[i].rapid, fine.poses[i].rapid) << i;
+  }
+}
+
+TEST(CoarseToFineSolveTest, MatchesTheDirectSolveOnADensePath) {
+  RuledSurface surface;
+  Machine machine;
+  ASSERT_TRUE(
+      ReadSurfaceJson(testing::SourcePath("data/surfaces/impeller_blade.json"), &surface).ok());
+  ASSERT_TRUE(
+      ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &machine).ok());
+  FlankPathOptions g;
+  g.poses = 900;
+  g.uv_distortion = 0.03;
+  g.axis_noise_deg = 0.3;
+  ToolPath input, guess;
+  ASSERT_TRUE(GenerateFlankPath(surface, g, &input).ok());
+  SplineSmootherReport spline_report;
+  ASSERT_TRUE(SmoothWithSplines(input, machine, &surface, *input.cutter, SplineSmootherOptions(),
+                                &guess, &spline_report)
+                  .ok());
+  const SmoothingInputs inputs{&input, &guess, &surface, &*input.cutter, &machine};
+  PathMetrics metrics[2];
+  for (int coarse = 0; coarse < 2; ++coarse) {
+    HighAccuracyOptions options;
+    options.progress = false;
+    options.coarse_poses = coarse ? 100 : 0;  // 900 -> 112 stations, or direct
+    ToolPath out;
+    HighAccuracyReport report;
+    ASSERT_TRUE(SmoothHighAccuracy(inputs, options, &out, &report).ok());
+    EXPECT_TRUE(report.converged);
+    ASSERT_TRUE(EvaluatePath(out, machine, &surface, *input.cutter, DeviationOptions(),
+                             MotionOptions(), &metrics[coarse])
+                    .ok());
+  }
+  ASSERT_TRUE(metrics[0].deviation && metrics[1].deviation);
+  const double tolerance_mm = HighAccuracyOptions().tolerance_mm;
+  EXPECT_LT(metrics[1].deviation->max_overcut_mm, tolerance_mm);
+  EXPECT_LT(metrics[1].deviation->max_undercut_mm, tolerance_mm);
+  EXPECT_NEAR(metrics[1].deviation->max_overcut_mm, metrics[0].deviation->max_overcut_mm, 1e-3);
+  EXPECT_NEAR(metrics[1].deviation->max_undercut_mm, metrics[0].deviation->max_undercut_mm, 1e-3);
+  EXPECT_NEAR(metrics[1].deviation->rms_deviation_mm, metrics[0].deviation->rms_deviation_mm, 3e-4);
+}
+
+}  // namespace
+}  // namespace tpopt
