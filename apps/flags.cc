@@ -66,6 +66,9 @@ DEFINE_int32(coarse_poses, 250,
              "over every 8th pose down to about this many (0 = always solve in full).");
 DEFINE_int32(refine_iterations, 5,
              "high_accuracy: iteration limit of the full refinement after a coarse solve.");
+DEFINE_int32(window_poses, 20000,
+             "high_accuracy: longer problems are solved in overlapping windows of this many poses, "
+             "which bounds the memory (0 = never).");
 DEFINE_int32(num_threads, 2, "high_accuracy: Ceres threads (the same count gives the same result).");
 DEFINE_double(spline_tolerance_deg, 0.05,
               "spline: largest A/C change the fit may make outside the abrupt zones, deg "

@@ -34,6 +34,7 @@ Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptio
   ha->max_iterations = FLAGS_max_iterations;
   ha->coarse_poses = FLAGS_coarse_poses;
   ha->refine_iterations = FLAGS_refine_iterations;
+  ha->window_poses = FLAGS_window_poses;
   ha->num_threads = FLAGS_num_threads;
   ha->default_feed_mm_per_min = FLAGS_feed;
   ha->angle_tolerance_deg = FLAGS_angle_tolerance_deg;

@@ -34,14 +34,19 @@ class ProgressPrinter : public ceres::IterationCallback {
   }
 };
 
-// Poses that may move: not rapid targets, and on a cutting move.
-std::vector<bool> FreePoses(const ToolPath& path) {
+// Poses that may move: not rapid targets, on a cutting move, and not held
+// at an end of the problem (a window's seams, see solver/windowed_solve.h).
+std::vector<bool> FreePoses(const SmoothingInputs& in) {
+  const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
   std::vector<bool> cutting(n, false);
   for (size_t i = 0; i + 1 < n; ++i) {
     if (!path.poses[i + 1].rapid) cutting[i] = cutting[i + 1] = true;
   }
-  for (size_t i = 0; i < n; ++i) cutting[i] = cutting[i] && !path.poses[i].rapid;
+  for (size_t i = 0; i < n; ++i) {
+    const bool held = i < in.held_first || i + in.held_last >= n;
+    cutting[i] = cutting[i] && !path.poses[i].rapid && !held;
+  }
   return cutting;
 }
 
@@ -242,6 +247,8 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
         << w_band << " must be > 0, slide weight " << slide_weight << " >= 0";
   } else if (!(default_feed_mm_per_min > 0)) {
     err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
+  } else if (window_poses != 0 && window_poses < 100) {
+    err << "window poses " << window_poses << " must be 0 (no windows) or >= 100";
   } else if (coarse_poses < 0 || refine_iterations < 0) {
     err << "coarse poses " << coarse_poses << " and refine iterations " << refine_iterations
         << " must be >= 0";
@@ -297,7 +304,7 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
     state->t_s[i] = state->t_s[i - 1] + std::max(dt, kMinStep);
   }
   const double length_mm = std::max(state->s_mm.back(), kMinStep);
-  const std::vector<bool> free_pose = FreePoses(path);
+  const std::vector<bool> free_pose = FreePoses(in);
   const AxisLimits& a_travel = in.machine->limits[kA];
   for (size_t i = 0; i < n; ++i) {
     double* pose = state->poses[i].data();
@@ -340,11 +347,6 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
 
 namespace {
 
-// Solves a path without consecutive repeated poses (see SmoothHighAccuracy),
-// coarse to fine when it is dense.
-Status SolveDistinct(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
-                     ToolPath* out, HighAccuracyReport* report);
-
 // Index of the distinct pose each pose repeats (itself when it moves).
 std::vector<size_t> DistinctIndex(const ToolPath& path) {
   std::vector<size_t> index(path.poses.size());
@@ -378,7 +380,7 @@ Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptio
   // distinct poses and each repeat takes its original's result.
   const std::vector<size_t> index = DistinctIndex(*inputs.input);
   if (index.empty() || index.back() + 1 == index.size()) {
-    return SolveDistinct(inputs, options, out, report);
+    return SolveCoarseToFine(inputs, options, out, report);
   }
   const ToolPath input = Distinct(*inputs.input, index);
   const ToolPath guess = Distinct(inputs.initial_guess ? *inputs.initial_guess : *inputs.input, index);
@@ -386,7 +388,7 @@ Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptio
   distinct.input = &input;
   distinct.initial_guess = &guess;
   ToolPath solved;
-  Status s = SolveDistinct(distinct, options, &solved, report);
+  Status s = SolveCoarseToFine(distinct, options, &solved, report);
   if (!s.ok()) return s;
   *out = *inputs.input;
   for (size_t i = 0; i < out->poses.size(); ++i) {
@@ -396,11 +398,8 @@ Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptio
   return Status::Ok();
 }
 
-namespace {
-
-// One Ceres solve of the whole problem.
-Status SolveOnce(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
-                 ToolPath* out, HighAccuracyReport* report) {
+Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                         ToolPath* out, HighAccuracyReport* report) {
   std::string why;
   if (!options.IsValid(&why)) return Status::Error("high_accuracy options: " + why);
   const auto start = std::chrono::steady_clock::now();
@@ -433,7 +432,7 @@ Status SolveOnce(const SmoothingInputs& inputs, const HighAccuracyOptions& optio
     report->final_cost_by_family[family] = cost;
   }
   *out = *inputs.input;
-  const std::vector<bool> free_pose = FreePoses(*inputs.input);
+  const std::vector<bool> free_pose = FreePoses(inputs);
   for (size_t i = 0; i < out->poses.size(); ++i) {
     const auto& p = state.poses[i];
     out->poses[i].p_w_tip = Eigen::Vector3d(p[kPoseTip], p[kPoseTip + 1], p[kPoseTip + 2]);
@@ -446,63 +445,5 @@ Status SolveOnce(const SmoothingInputs& inputs, const HighAccuracyOptions& optio
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
 }
-
-Status SolveDistinct(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
-                     ToolPath* out, HighAccuracyReport* report) {
-  const size_t n = inputs.input->poses.size();
-  // Surface-free, every pose has its own band around the original program,
-  // whose corners a subset of stations cannot represent.
-  if (inputs.surface == nullptr || options.coarse_poses == 0 ||
-      n <= 2 * static_cast<size_t>(options.coarse_poses)) {
-    return SolveOnce(inputs, options, out, report);
-  }
-  const auto start = std::chrono::steady_clock::now();
-  // Each level keeps one pose in kLevelRatio, down to coarse_poses.
-  constexpr size_t kLevelRatio = 8;
-  const size_t target = std::max<size_t>(options.coarse_poses, n / kLevelRatio);
-  const std::vector<size_t> stations = CoarseStations(*inputs.input, target);
-  const ToolPath coarse_input = SubPath(*inputs.input, stations);
-  const ToolPath coarse_guess =
-      SubPath(inputs.initial_guess ? *inputs.initial_guess : *inputs.input, stations);
-  SmoothingInputs coarse = inputs;
-  coarse.input = &coarse_input;
-  coarse.initial_guess = &coarse_guess;
-  if (options.progress) {
-    std::fprintf(stderr, "  high_accuracy: coarse solve over %zu of %zu poses\n",
-                 stations.size(), n);
-  }
-  // The refinement finishes the job, so the coarse solve may stop once
-  // its cost settles to 1e-6.
-  HighAccuracyOptions coarse_options = options;
-  coarse_options.function_tolerance = std::max(options.function_tolerance, 1e-6);
-  ToolPath coarse_solved;
-  HighAccuracyReport coarse_report;
-  Status s = SolveDistinct(coarse, coarse_options, &coarse_solved, &coarse_report);
-  if (!s.ok()) return s;
-  ToolPath fine_guess;
-  s = InterpolateStations(*inputs.input, stations, coarse_solved, *inputs.machine, &fine_guess);
-  if (!s.ok()) return s;
-  SmoothingInputs fine = inputs;
-  fine.initial_guess = &fine_guess;
-  // From the interpolated stations the deviation is already that of the
-  // optimum (measured on the impeller: the same to 1e-6 mm); refinement
-  // only polishes the smoothness, so it stops at a 0.1 % cost change.
-  HighAccuracyOptions refine = options;
-  refine.max_iterations = options.refine_iterations;
-  refine.function_tolerance = std::max(options.function_tolerance, 1e-3);
-  if (options.progress) {
-    std::fprintf(stderr, "  high_accuracy: refining all %zu poses (at most %d iterations)\n", n,
-                 refine.max_iterations);
-  }
-  s = SolveOnce(fine, refine, out, report);
-  if (!s.ok()) return s;
-  report->iterations += coarse_report.iterations;
-  report->converged = report->converged && coarse_report.converged;
-  report->solve_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return Status::Ok();
-}
-
-}  // namespace
 
 }  // namespace tpopt

