@@ -15,6 +15,7 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "model/status.h"
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace tpopt {
 namespace {
@@ -48,53 +49,83 @@ Candidate Evaluate(const TorusCutter& cutter, const CrossSection& section, const
 }
 
 // MPEC's positioning: move the contact along the section until the strip's
-// mid-point is the CC point. Moving the contact by ds moves the strip by
-// about ds, so a few fixed-point steps s_c -= mid converge.
+// mid-point is the CC point, by the secant method on mid(s_c) (moving the
+// contact by ds moves the strip by about ds, so it starts with s_c = -mid).
+// A posture whose strip cannot be centred within half a sample is not an
+// MPEC posture and is marked infeasible.
 Candidate CentredOnCc(const TorusCutter& cutter, const CrossSection& section, Posture posture,
                       const PostureOptions& options) {
   const double reach = 0.9 * section.step_mm * section.centre;
+  const double close_enough = 0.25 * section.step_mm;
   Candidate c = Evaluate(cutter, section, posture, options);
-  for (int step = 0; step < 6 && std::abs(c.strip.mid()) > 0.25 * section.step_mm; ++step) {
-    posture.contact_s_mm = std::clamp(posture.contact_s_mm - c.strip.mid(), -reach, reach);
+  double previous_s = posture.contact_s_mm, previous_mid = c.strip.mid();
+  double next_s = previous_s - previous_mid;
+  for (int step = 0; step < 8 && std::abs(c.strip.mid()) > close_enough; ++step) {
+    posture.contact_s_mm = std::clamp(next_s, -reach, reach);
     c = Evaluate(cutter, section, posture, options);
+    const double slope = (c.strip.mid() - previous_mid) / (posture.contact_s_mm - previous_s);
+    previous_s = posture.contact_s_mm;
+    previous_mid = c.strip.mid();
+    // A flat or reversed response: fall back to the unit-slope step.
+    next_s = previous_s - previous_mid / (slope > 0.2 ? slope : 1.0);
   }
+  if (std::abs(c.strip.mid()) > 2 * close_enough) c.feasible = false;
   return c;
 }
 
-// Widest gouge-free strip over lead and tilt: a coarse grid over the search
-// box, then a compass search from the best grid point with halving steps.
-// Deterministic; robust to the flat and non-smooth width landscape (the
-// width jumps where a second contact appears), where a gradient method is
-// not.
+// At a fixed tilt, the least lead that does not gouge. A smaller lead
+// flattens the tool across the feed (R_eff = r + R0 / sin(lead) at zero
+// tilt), which widens the strip until the surface starts to rise into the
+// tool somewhere: the widest gouge-free strip at this tilt is at that
+// boundary, where the tool touches the section at a further point — the
+// multi-point contact. Found by bisection on the lead; on a section where
+// even the least lead does not gouge (a convex one) it is the least lead.
 template <typename Place>
-Candidate SearchLeadTilt(const PostureOptions& options, Place place) {
-  constexpr int kLeads = 8, kTilts = 9;
-  const double lead_step = (options.max_lead_rad - options.min_lead_rad) / (kLeads - 1);
-  const double tilt_step = 2 * options.max_tilt_rad / (kTilts - 1);
-  Candidate best;
-  bool have = false;
-  for (int i = 0; i < kLeads; ++i) {
-    for (int j = 0; j < kTilts; ++j) {
-      const Candidate c =
-          place(options.min_lead_rad + i * lead_step, -options.max_tilt_rad + j * tilt_step);
-      if (!have || c.BetterThan(best)) best = c, have = true;
+Candidate LeadAtGougeBoundary(const PostureOptions& options, double tilt, Place place) {
+  Candidate high = place(options.max_lead_rad, tilt);
+  if (!high.feasible) return high;
+  const Candidate low = place(options.min_lead_rad, tilt);
+  if (low.feasible) return low.BetterThan(high) ? low : high;
+  double infeasible = options.min_lead_rad, feasible = options.max_lead_rad;
+  Candidate best = high;
+  while (feasible - infeasible > options.angle_resolution_rad) {
+    const double lead = 0.5 * (feasible + infeasible);
+    const Candidate c = place(lead, tilt);
+    if (c.feasible) {
+      feasible = lead;
+      if (c.BetterThan(best)) best = c;
+    } else {
+      infeasible = lead;
     }
   }
-  double step_lead = 0.5 * lead_step, step_tilt = 0.5 * tilt_step;
-  while (std::max(step_lead, step_tilt) > options.angle_resolution_rad) {
-    bool improved = false;
-    const double moves[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-    for (const auto& m : moves) {
-      const double lead = best.posture.lead_rad + m[0] * step_lead;
-      const double tilt = best.posture.tilt_rad + m[1] * step_tilt;
-      if (lead < options.min_lead_rad || lead > options.max_lead_rad ||
-          std::abs(tilt) > options.max_tilt_rad) {
-        continue;
-      }
-      const Candidate c = place(lead, tilt);
-      if (c.BetterThan(best)) best = c, improved = true;
+  return best;
+}
+
+// Widest gouge-free strip over lead and tilt: for each tilt the lead at the
+// gouge boundary (above), and over the tilt a grid across the whole range
+// followed by grids zooming in on the best tilt, each a third of the
+// spacing of the one before. The widest strips lie on a thin ridge in
+// (lead, tilt) along that boundary, and the width jumps where a further
+// contact appears; a gradient method, or a search over both angles at once,
+// steps over the ridge.
+template <typename Place>
+Candidate SearchLeadTilt(const PostureOptions& options, Place place) {
+  constexpr int kCoarseHalf = 8, kZoomHalf = 3;
+  double tilt_step = options.max_tilt_rad / kCoarseHalf;
+  int half_count = kCoarseHalf;
+  double centre = 0.0;
+  Candidate best = LeadAtGougeBoundary(options, 0.0, place);
+  while (true) {
+    for (int j = -half_count; j <= half_count; ++j) {
+      const double tilt = centre + j * tilt_step;
+      if (j == 0 || std::abs(tilt) > options.max_tilt_rad + 1e-12) continue;
+      const Candidate c = LeadAtGougeBoundary(options, tilt, place);
+      if (c.BetterThan(best)) best = c;
     }
-    if (!improved) step_lead *= 0.5, step_tilt *= 0.5;
+    if (tilt_step < options.angle_resolution_rad * kZoomHalf) break;
+    centre = best.posture.tilt_rad;
+    tilt_step /= kZoomHalf;
+    half_count = kZoomHalf;
   }
   return best;
 }

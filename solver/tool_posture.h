@@ -53,7 +53,7 @@ struct PostureOptions {
   double max_tilt_rad = 20.0 * M_PI / 180.0;
   // A deviation below -gouge_tolerance_mm counts as a gouge. Numerical
   // noise of the deviation is ~1e-9 mm; a multi-point contact touches at 0.
-  double gouge_tolerance_mm = 1e-4;
+  double gouge_tolerance_mm = 1e-6;
   // The search stops refining once its step is below this, radians.
   double angle_resolution_rad = 0.01 * M_PI / 180.0;
 
