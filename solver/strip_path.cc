@@ -35,7 +35,9 @@ Status PlanStripPath(const ParametricSurface& surface, const TorusCutter& cutter
                                        options.samples_per_side, &section);
     if (!s.ok()) return Status::Error("CC point " + std::to_string(i) + ": " + s.message());
     p.cc = section.cc;
-    p.posture = ChoosePosture(options.method, cutter, section, options.posture, &p.strip);
+    const Posture* previous = i > 0 ? &(*points)[i - 1].posture : nullptr;
+    p.posture =
+        ChoosePosture(options.method, cutter, section, options.posture, &p.strip, previous);
     p.tool = PlaceTool(cutter, section, p.posture);
     p.tool_centre = ToolCentre(cutter, p.tool.tip, p.tool.axis);
   }

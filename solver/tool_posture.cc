@@ -108,8 +108,24 @@ Candidate LeadAtGougeBoundary(const PostureOptions& options, double tilt, Place 
 // (lead, tilt) along that boundary, and the width jumps where a further
 // contact appears; a gradient method, or a search over both angles at once,
 // steps over the ridge.
+//
+// Where two tilts give strips of nearly equal width (within
+// options.continuity_tie of each other; a symmetric section has two mirror
+// optima) the one nearer the previous CC point's posture is taken, so that
+// the pass does not jump between them.
 template <typename Place>
-Candidate SearchLeadTilt(const PostureOptions& options, Place place) {
+Candidate SearchLeadTilt(const PostureOptions& options, const Posture* previous, Place place) {
+  const auto preferred = [&](const Candidate& c, const Candidate& best) {
+    const double wider = std::max(c.strip.width(), best.strip.width());
+    if (previous == nullptr || !c.feasible || !best.feasible ||
+        std::abs(c.strip.width() - best.strip.width()) > options.continuity_tie * wider) {
+      return c.BetterThan(best);
+    }
+    const auto distance = [&](const Posture& p) {
+      return std::abs(p.lead_rad - previous->lead_rad) + std::abs(p.tilt_rad - previous->tilt_rad);
+    };
+    return distance(c.posture) < distance(best.posture);
+  };
   constexpr int kCoarseHalf = 8, kZoomHalf = 3;
   double tilt_step = options.max_tilt_rad / kCoarseHalf;
   int half_count = kCoarseHalf;
@@ -120,7 +136,7 @@ Candidate SearchLeadTilt(const PostureOptions& options, Place place) {
       const double tilt = centre + j * tilt_step;
       if (j == 0 || std::abs(tilt) > options.max_tilt_rad + 1e-12) continue;
       const Candidate c = LeadAtGougeBoundary(options, tilt, place);
-      if (c.BetterThan(best)) best = c;
+      if (preferred(c, best)) best = c;
     }
     if (tilt_step < options.angle_resolution_rad * kZoomHalf) break;
     centre = best.posture.tilt_rad;
@@ -146,8 +162,9 @@ bool PostureOptions::IsValid(std::string* why) const {
         << min_lead_rad * deg << ", " << max_lead_rad * deg << "]";
   } else if (!(max_tilt_rad >= 0.0) || max_tilt_rad >= M_PI / 2) {
     err << "max tilt " << max_tilt_rad * deg << " deg must be in [0, 90)";
-  } else if (!(gouge_tolerance_mm >= 0.0) || !(angle_resolution_rad > 0.0)) {
-    err << "gouge tolerance and angle resolution must be positive";
+  } else if (!(gouge_tolerance_mm >= 0.0) || !(angle_resolution_rad > 0.0) ||
+             !(continuity_tie >= 0.0 && continuity_tie < 1.0)) {
+    err << "gouge tolerance, angle resolution and continuity tie must be positive (tie < 1)";
   } else {
     return true;
   }
@@ -175,19 +192,20 @@ Strip EvaluatePosture(const TorusCutter& cutter, const CrossSection& section,
 }
 
 Posture ChoosePosture(PostureMethod method, const TorusCutter& cutter,
-                      const CrossSection& section, const PostureOptions& options, Strip* strip) {
+                      const CrossSection& section, const PostureOptions& options, Strip* strip,
+                      const Posture* previous) {
   Candidate chosen;
   switch (method) {
     case PostureMethod::kSturz:
       chosen = Evaluate(cutter, section, Posture{options.sturz_lead_rad, 0.0, 0.0}, options);
       break;
     case PostureMethod::kMultiPoint:
-      chosen = SearchLeadTilt(options, [&](double lead, double tilt) {
+      chosen = SearchLeadTilt(options, previous, [&](double lead, double tilt) {
         return Evaluate(cutter, section, Posture{lead, tilt, 0.0}, options);
       });
       break;
     case PostureMethod::kMidPointErrorControl:
-      chosen = SearchLeadTilt(options, [&](double lead, double tilt) {
+      chosen = SearchLeadTilt(options, previous, [&](double lead, double tilt) {
         return CentredOnCc(cutter, section, Posture{lead, tilt, 0.0}, options);
       });
       break;

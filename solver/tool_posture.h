@@ -56,6 +56,10 @@ struct PostureOptions {
   double gouge_tolerance_mm = 1e-6;
   // The search stops refining once its step is below this, radians.
   double angle_resolution_rad = 0.01 * M_PI / 180.0;
+  // MPM and MPEC: strips whose widths differ by less than this fraction
+  // count as equally wide, and the posture nearer the previous CC point's
+  // wins (see ChoosePosture). 0 = always the wider.
+  double continuity_tie = 0.005;
 
   bool IsValid(std::string* why) const;
 };
@@ -71,9 +75,14 @@ PlacedTool PlaceTool(const TorusCutter& cutter, const CrossSection& section,
 Strip EvaluatePosture(const TorusCutter& cutter, const CrossSection& section,
                       const Posture& posture, double tolerance_mm);
 
-// The method's posture at this CC point, and its strip.
+// The method's posture at this CC point, and its strip. `previous`, the
+// posture at the CC point before (or null), breaks near-ties between
+// equally wide strips in favour of continuity: a symmetric section has two
+// mirror-image optima (tilt +t and -t), and picking between them by
+// round-off makes the tool jump from side to side along the pass.
 Posture ChoosePosture(PostureMethod method, const TorusCutter& cutter,
-                      const CrossSection& section, const PostureOptions& options, Strip* strip);
+                      const CrossSection& section, const PostureOptions& options, Strip* strip,
+                      const Posture* previous = nullptr);
 
 }  // namespace tpopt
 
