@@ -4,8 +4,6 @@
 #include <cmath>
 #include <sstream>
 
-#include <glog/logging.h>
-
 namespace tpopt {
 
 bool TorusCutter::IsValid(std::string* why) const {
@@ -41,7 +39,8 @@ Eigen::Vector3d TipForContact(const TorusCutter& cutter, const Eigen::Vector3d& 
   // axis: e = unit(m - (m . a) a).
   const Eigen::Vector3d m = -normal;
   const Eigen::Vector3d radial = m - m.dot(axis) * axis;
-  CHECK_GT(radial.norm(), 1e-12) << "tool axis parallel to the surface normal";
+  // Axis along the normal: the flat end face touches, at its centre.
+  if (radial.norm() < 1e-12) return contact;
   const Eigen::Vector3d e = radial.normalized();
   const Eigen::Vector3d centre =
       contact - cutter.corner_radius_mm * m - cutter.centre_circle_radius_mm() * e;

@@ -39,10 +39,11 @@ double SignedDistanceToTorus(const TorusCutter& cutter, const Eigen::Vector3d& q
 // Where the cutter touches a surface at `contact` with unit surface normal
 // `normal` (pointing from the surface towards the tool), for a unit tool
 // axis: the tip that puts the cutter's corner point whose outward normal is
-// -normal onto `contact`. Preconditions: axis.dot(normal) > 0 (the contact
-// is on the lower half of the corner) and the axis is not parallel to the
-// normal (else the contact circle is undetermined; the lead/tilt methods
-// keep at least a small lead).
+// -normal onto `contact`. Meant for axis.dot(normal) > 0 (the contact on
+// the lower half of the corner); otherwise the placement is still finite
+// but the cutter cuts into the surface, which the strip evaluation reports
+// as a gouge. With the axis along the normal the end face touches at its
+// centre (tip = contact).
 Eigen::Vector3d TipForContact(const TorusCutter& cutter, const Eigen::Vector3d& contact,
                               const Eigen::Vector3d& normal, const Eigen::Vector3d& axis);
 

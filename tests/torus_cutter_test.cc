@@ -53,6 +53,13 @@ TEST(TorusCutterTest, ContactPlacementTouchesWithTheRightNormal) {
   }
 }
 
+TEST(TorusCutterTest, AxisAlongTheNormalPutsTheEndFaceOnTheContact) {
+  const Eigen::Vector3d contact(3, 4, 5), n = Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d tip = TipForContact(kCutter, contact, n, n);
+  EXPECT_LT((tip - contact).norm(), 1e-15);
+  EXPECT_NEAR(SignedDistanceToTorus(kCutter, contact - 0.1 * n, tip, n), 0.1, 1e-12);
+}
+
 TEST(TorusCutterTest, EffectiveRadiusLimits) {
   // At 90 deg the contact is on the outer equator, whose parallel circle
   // is the flank: R_eff = R. As the lead falls the end face flattens out.
