@@ -51,6 +51,26 @@ TEST(FreeformSurfaceTest, CurvaturesAtTheSaddlePoint) {
   EXPECT_NEAR(off.k_max * off.k_min, -4 * kK * kK / (g * g), 1e-12);
 }
 
+TEST(FreeformSurfaceTest, PropellerBladeTurnsFromConcaveToConvexAcrossTheChord) {
+  // The blade file's documented shape: along the mid-chord line the
+  // chordwise section is a parabola of depth 3 mm over the 30 mm half chord
+  // (curvature 2 * 3 / 30^2, concave towards the cutter) before x = 52 mm
+  // and of depth -2.5 mm after x = 64 mm. The control net samples the shape
+  // at the Greville points, so the spline follows it only approximately.
+  FreeformSurface blade;
+  const Status s = ReadFreeformSurfaceJson(
+      testing::SourcePath("data/surfaces/propeller_blade_freeform.json"), &blade);
+  ASSERT_TRUE(s.ok()) << s.message();
+  const auto chordwise = [&](double u) {
+    const SurfaceDerivatives d = blade.Evaluate(u, 0.5);
+    return blade.NormalCurvature(d, d.sv);
+  };
+  EXPECT_NEAR(chordwise(0.2), 2 * 3.0 / 900, 0.1 * 2 * 3.0 / 900);
+  EXPECT_NEAR(chordwise(0.8), -2 * 2.5 / 900, 0.1 * 2 * 2.5 / 900);
+  // Most of the change happens within the 12 mm (u = 0.1) transition.
+  EXPECT_GT(chordwise(0.42) - chordwise(0.55), 0.8 * (chordwise(0.2) - chordwise(0.8)));
+}
+
 std::string WriteFile(const testing::TempDir& dir, const std::string& text) {
   const std::string path = dir.File("s.json");
   std::ofstream(path) << text;
