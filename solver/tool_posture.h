@@ -24,6 +24,7 @@
 #ifndef TPOPT_SOLVER_TOOL_POSTURE_H_
 #define TPOPT_SOLVER_TOOL_POSTURE_H_
 
+#include <cmath>
 #include <string>
 
 #include <Eigen/Core>
