@@ -44,7 +44,8 @@ DEFINE_string(mode, "high_accuracy",
               "(Ceres least squares started from the spline result).");
 DEFINE_double(tolerance_mm, 0.01,
               "high_accuracy: with a surface, the deviation unit of the cost, mm; without one, "
-              "how far a tip may leave the original tip polyline, mm.");
+              "how far a tip may leave the original tip polyline, mm. stripwidth: the largest "
+              "deviation (scallop) allowed across a strip, mm.");
 DEFINE_double(angle_tolerance_deg, 0.5,
               "high_accuracy without a surface: how far a tool axis may turn from the "
               "original, deg.");
@@ -85,3 +86,17 @@ DEFINE_bool(schedule_feed, true,
 DEFINE_double(resample_step_mm, 0.0,
               "smooth: resample the output with cubic splines through the tip and A, C at this "
               "arc-length step, mm (0 keeps the input's poses).");
+
+DEFINE_string(method, "mpec",
+              "stripwidth: sturz (fixed lead, no tilt), mpm (multi-point: widest gouge-free "
+              "strip touching at the CC point) or mpec (mid-point error control: widest "
+              "gouge-free strip centred on the CC point).");
+DEFINE_string(cutter, "", "stripwidth: the cutter, torus:R,r (outer and corner radius, mm).");
+DEFINE_int32(cc_points, 40, "stripwidth: CC points along the pass (v = --path_v, u in [0.05, 0.95]).");
+DEFINE_double(path_v, 0.5, "stripwidth: the surface parameter v of the pass, in [0, 1].");
+DEFINE_double(lead_deg, 10.0, "stripwidth: Sturz's fixed lead angle, deg.");
+DEFINE_double(min_lead_deg, 1.0, "stripwidth: least lead angle mpm and mpec may use, deg (> 0).");
+DEFINE_double(max_lead_deg, 40.0, "stripwidth: largest lead angle mpm and mpec may use, deg.");
+DEFINE_double(max_tilt_deg, 20.0, "stripwidth: largest |tilt| angle mpm and mpec may use, deg.");
+DEFINE_int32(section_samples, 80,
+             "stripwidth: cross-section samples each side of a CC point, over 2 R.");

@@ -66,4 +66,14 @@ DECLARE_bool(insert_transitions);
 DECLARE_bool(smooth_outside_zones);
 DECLARE_bool(schedule_feed);
 DECLARE_double(resample_step_mm);
+// stripwidth
+DECLARE_string(method);
+DECLARE_string(cutter);
+DECLARE_int32(cc_points);
+DECLARE_double(path_v);
+DECLARE_double(lead_deg);
+DECLARE_double(min_lead_deg);
+DECLARE_double(max_lead_deg);
+DECLARE_double(max_tilt_deg);
+DECLARE_int32(section_samples);
 #endif  // TPOPT_APPS_FLAGS_H_

@@ -23,6 +23,8 @@ constexpr char kUsage[] =
     "  evaluate  --in=P [--surface=S] [--machine=M] --report=R.json\n"
     "  smooth    --in=P --out=Q [--surface=S] [--machine=M] --mode=spline|high_accuracy\n"
     "            [weights...] --report=R.json\n"
+    "  stripwidth --surface=S.json --method=sturz|mpm|mpec --cutter=torus:R,r\n"
+    "            --tolerance_mm=H --out=P.cls [--machine=M] [--report=R.json]\n"
     "\n"
     "Exit codes: 0 success, 1 bad input, 2 usage, 3 solver failure.\n"
     "`tpopt --help` lists every flag.\n";
@@ -63,6 +65,7 @@ int main(int argc, char** argv) {
   if (sub == "generate") return tpopt::RunGenerate(invocation);
   if (sub == "evaluate") return tpopt::RunEvaluate(invocation);
   if (sub == "smooth") return tpopt::RunSmooth(invocation);
+  if (sub == "stripwidth") return tpopt::RunStripWidth(invocation);
   std::fprintf(stderr, "tpopt: unknown subcommand '%s'\n%s", sub.c_str(), kUsage);
   return tpopt::kExitUsage;
 }

@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/json_fields.h"
+
 namespace tpopt {
 namespace {
 
@@ -13,71 +15,22 @@ using nlohmann::json;
 
 constexpr double kDegToRad = M_PI / 180.0;
 
-// Parses the whole file; a syntax error names its line.
-Status ParseFile(const std::string& path, json* out) {
-  std::ifstream in(path);
-  if (!in) return Status::Error(path + ": cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  try {
-    *out = json::parse(s);
-  } catch (const json::parse_error& e) {
-    const size_t byte = std::min<size_t>(e.byte, s.size());
-    const long line = 1 + std::count(s.begin(), s.begin() + byte, '\n');
-    return Status::Error(path + ":" + std::to_string(line) + ": malformed JSON (" + e.what() +
-                         ")");
-  } catch (const json::exception& e) {
-    // E.g. a number too large for a double: nlohmann reports no position.
-    return Status::Error(path + ": unreadable JSON (" + e.what() + ")");
-  }
-  if (!out->is_object()) return Status::Error(path + ": the top level must be a JSON object");
-  return Status::Ok();
-}
-
-// A finite number at j[key]; `what` names it in messages.
-Status Number(const json& j, const std::string& what, double* out) {
-  if (!j.is_number()) return Status::Error(what + " must be a number, got " + j.dump());
-  *out = j.get<double>();
-  // Geometry beyond a kilometre is a corrupt file, and squaring 1e308
-  // overflows every distance computed from it.
-  if (!std::isfinite(*out) || std::abs(*out) > 1e6) {
-    return Status::Error(what + " = " + j.dump() + " is out of range (|v| <= 1e6)");
-  }
-  return Status::Ok();
-}
-
-Status Point(const json& j, const std::string& what, Eigen::Vector3d* p) {
-  if (!j.is_array() || j.size() != 3) {
-    return Status::Error(what + " must be [x, y, z], got " + j.dump());
-  }
-  for (int k = 0; k < 3; ++k) {
-    Status s = Number(j[k], what + "[" + std::to_string(k) + "]", &(*p)[k]);
-    if (!s.ok()) return s;
-  }
-  return Status::Ok();
-}
-
 Status Rail(const json& j, const std::string& what, BSplineCurve* curve) {
   if (!j.is_object()) return Status::Error(what + " must be an object");
   if (!j.contains("degree") || !j["degree"].is_number_integer()) {
     return Status::Error(what + ".degree must be an integer");
   }
-  if (!j.contains("knots") || !j["knots"].is_array()) {
-    return Status::Error(what + ".knots must be an array");
-  }
+  if (!j.contains("knots")) return Status::Error(what + ".knots must be an array");
   if (!j.contains("control_points") || !j["control_points"].is_array()) {
     return Status::Error(what + ".control_points must be an array");
   }
-  std::vector<double> knots(j["knots"].size());
-  for (size_t k = 0; k < knots.size(); ++k) {
-    Status s = Number(j["knots"][k], what + ".knots[" + std::to_string(k) + "]", &knots[k]);
-    if (!s.ok()) return s;
-  }
+  std::vector<double> knots;
+  Status s = JsonNumbers(j["knots"], what + ".knots", &knots);
+  if (!s.ok()) return s;
   std::vector<Eigen::Vector3d> points(j["control_points"].size());
   for (size_t k = 0; k < points.size(); ++k) {
-    Status s = Point(j["control_points"][k], what + ".control_points[" + std::to_string(k) + "]",
-                     &points[k]);
+    s = JsonPoint(j["control_points"][k], what + ".control_points[" + std::to_string(k) + "]",
+                  &points[k]);
     if (!s.ok()) return s;
   }
   return BSplineCurve::Create(j["degree"].get<int>(), std::move(knots), std::move(points), what,
@@ -89,7 +42,7 @@ Status Optional(const json& j, const std::string& key, const std::string& what, 
                 double* out) {
   if (!j.contains(key) || j[key].is_null()) return Status::Ok();
   double v = 0.0;
-  Status s = Number(j[key], what + "." + key, &v);
+  Status s = JsonNumber(j[key], what + "." + key, &v);
   if (!s.ok()) return s;
   *out = v * scale;
   return Status::Ok();
@@ -124,24 +77,12 @@ Status AxisFromJson(const json& j, const std::string& what, double scale, AxisLi
   return Status::Ok();
 }
 
-// j[key] as a string, `fallback` when absent; an error when not a string.
-Status StringOr(const json& j, const std::string& key, const std::string& what,
-                const std::string& fallback, std::string* out) {
-  if (!j.contains(key)) {
-    *out = fallback;
-    return Status::Ok();
-  }
-  if (!j[key].is_string()) return Status::Error(what + "." + key + " must be a string, got " + j[key].dump());
-  *out = j[key].get<std::string>();
-  return Status::Ok();
-}
-
 Status SurfaceFromJson(const std::string& path, const json& j, RuledSurface* surface) {
   std::string kind, units, side_name, name;
-  Status s = StringOr(j, "kind", path + ": surface", "ruled", &kind);
-  if (s.ok()) s = StringOr(j, "units", path + ": surface", "mm", &units);
-  if (s.ok()) s = StringOr(j, "cutter_side", path + ": surface", "positive", &side_name);
-  if (s.ok()) s = StringOr(j, "name", path + ": surface", path, &name);
+  Status s = JsonStringOr(j, "kind", path + ": surface", "ruled", &kind);
+  if (s.ok()) s = JsonStringOr(j, "units", path + ": surface", "mm", &units);
+  if (s.ok()) s = JsonStringOr(j, "cutter_side", path + ": surface", "positive", &side_name);
+  if (s.ok()) s = JsonStringOr(j, "name", path + ": surface", path, &name);
   if (!s.ok()) return s;
   if (kind != "ruled") {
     return Status::Error(path + ": kind \"" + kind + "\" is not supported (\"ruled\")");
@@ -169,15 +110,15 @@ Status SurfaceFromJson(const std::string& path, const json& j, RuledSurface* sur
 Status MachineFromJson(const std::string& path, const json& j, Machine* machine) {
   std::string kinematics;
   Machine m;
-  Status s = StringOr(j, "kinematics", path + ": machine", "(absent)", &kinematics);
-  if (s.ok()) s = StringOr(j, "name", path + ": machine", path, &m.name);
+  Status s = JsonStringOr(j, "kinematics", path + ": machine", "(absent)", &kinematics);
+  if (s.ok()) s = JsonStringOr(j, "name", path + ": machine", path, &m.name);
   if (!s.ok()) return s;
   if (kinematics != "xyzac-trt") {
     return Status::Error(path + ": kinematics \"" + kinematics +
                          "\" is not supported (\"xyzac-trt\")");
   }
   if (j.contains("rotary_pivot")) {
-    s = Point(j["rotary_pivot"], path + ": rotary_pivot", &m.kinematics.rotary_pivot_mm);
+    s = JsonPoint(j["rotary_pivot"], path + ": rotary_pivot", &m.kinematics.rotary_pivot_mm);
     if (!s.ok()) return s;
   }
   s = Optional(j, "y_offset", path + ": machine", 1.0, &m.kinematics.y_offset_mm);
@@ -199,20 +140,6 @@ Status MachineFromJson(const std::string& path, const json& j, Machine* machine)
   }
   *machine = m;
   return Status::Ok();
-}
-
-// Parses and converts; any type surprise nlohmann still raises is turned
-// into a status naming the file instead of escaping the library.
-template <typename Value, typename Convert>
-Status ReadJsonFile(const std::string& path, Convert convert, Value* value) {
-  json j;
-  Status s = ParseFile(path, &j);
-  if (!s.ok()) return s;
-  try {
-    return convert(path, j, value);
-  } catch (const json::exception& e) {
-    return Status::Error(path + ": unexpected JSON content (" + e.what() + ")");
-  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include <ceres/ceres.h>
 #include <ceres/gradient_checker.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace tpopt::testing {
 
@@ -42,6 +44,15 @@ inline std::string SourcePath(const std::string& relative) {
 
 // Absolute path of the built tpopt program.
 inline std::string TpoptBinary() { return TPOPT_BINARY; }
+
+// A tpopt command line: the built program followed by `args`.
+inline std::string Tpopt(const std::string& args) { return TpoptBinary() + " " + args; }
+
+// A JSON file the program wrote (a test failure if it is not JSON).
+inline nlohmann::json ReadJson(const std::string& path) {
+  std::ifstream in(path);
+  return nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+}
 
 // Result of running a shell command: exit code and merged stdout+stderr.
 struct CommandResult {

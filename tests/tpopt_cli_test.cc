@@ -10,19 +10,15 @@ namespace tpopt {
 namespace {
 
 using testing::FileExists;
+using testing::ReadJson;
 using testing::RunCommand;
 using testing::SourcePath;
 using testing::TempDir;
-
-std::string Tpopt(const std::string& args) { return testing::TpoptBinary() + " " + args; }
+using testing::Tpopt;
 
 const std::string kBlade = SourcePath("data/surfaces/impeller_blade.json");
 const std::string kSim = SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
 
-nlohmann::json ReadJson(const std::string& path) {
-  std::ifstream in(path);
-  return nlohmann::json::parse(in);
-}
 
 TEST(TpoptCliTest, GenerateThenEvaluateWritesASaneReport) {
   TempDir dir;

@@ -1,0 +1,58 @@
+// A bicubic tensor-product B-spline surface (non-rational, clamped knots):
+//   S(u, v) = sum_i sum_j N_i,3(u) N_j,3(v) P_ij,  (u, v) in [0, 1]^2,
+// the file's knot ranges mapped affinely to [0, 1] as for BSplineCurve.
+// Named apart from issue 6's model/bspline_surface.h so that both can be
+// merged later.
+//
+// JSON (mm): {"name", "units": "mm", "kind": "bspline_surface",
+//  "cutter_side": "positive" | "negative", "degree_u": 3, "degree_v": 3,
+//  "knots_u": [...], "knots_v": [...],
+//  "control_points": [[[x, y, z], ...  one row per u index ...], ...]}
+// control_points[i][j] is P_ij: i runs along u, j along v.
+#ifndef TPOPT_MODEL_FREEFORM_SURFACE_H_
+#define TPOPT_MODEL_FREEFORM_SURFACE_H_
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "model/bspline_curve.h"
+#include "model/parametric_surface.h"
+#include "model/status.h"
+
+namespace tpopt {
+
+class FreeformSurface : public ParametricSurface {
+ public:
+  FreeformSurface() = default;
+
+  // Validates and builds: degree 3 in both directions, each knot vector
+  // clamped, non-decreasing, of size (control points in that direction) + 4,
+  // a rectangular grid of at least 4 x 4 finite points. `what` names the
+  // surface in messages (e.g. the file).
+  static Status Create(std::string name, std::vector<double> knots_u, std::vector<double> knots_v,
+                       const std::vector<std::vector<Eigen::Vector3d>>& control_points,
+                       double cutter_side_sign, const std::string& what,
+                       FreeformSurface* surface);
+
+  SurfaceDerivatives Evaluate(double u, double v) const override;
+  double cutter_side_sign() const override { return side_sign_; }
+  const std::string& name() const { return name_; }
+
+ private:
+  std::string name_;
+  std::vector<double> knots_u_;  // mapped to [0, 1]
+  // One cubic curve in v per row i of control points: evaluating them at v
+  // gives the control points (and their v-derivatives) of the u-curve
+  // through S(., v).
+  std::vector<BSplineCurve> rows_;
+  double side_sign_ = 1.0;
+};
+
+// Reads the JSON above. Errors name the file and the field, index and value.
+Status ReadFreeformSurfaceJson(const std::string& path, FreeformSurface* surface);
+
+}  // namespace tpopt
+
+#endif  // TPOPT_MODEL_FREEFORM_SURFACE_H_
