@@ -47,18 +47,44 @@ Status Number(const json& j, const std::string& what, double* out) {
   return Status::Ok();
 }
 
-Status Point(const json& j, const std::string& what, Eigen::Vector3d* p) {
-  if (!j.is_array() || j.size() != 3) {
-    return Status::Error(what + " must be [x, y, z], got " + j.dump());
+// [x, y, z], or [x, y] (z = 0) for a planar curve when `dimension` is 2.
+Status Point(const json& j, const std::string& what, Eigen::Vector3d* p, int dimension = 3) {
+  if (!j.is_array() || static_cast<int>(j.size()) != dimension) {
+    return Status::Error(what + " must be " + (dimension == 3 ? "[x, y, z]" : "[x, y]") +
+                         ", got " + j.dump());
   }
-  for (int k = 0; k < 3; ++k) {
+  p->setZero();
+  for (int k = 0; k < dimension; ++k) {
     Status s = Number(j[k], what + "[" + std::to_string(k) + "]", &(*p)[k]);
     if (!s.ok()) return s;
   }
   return Status::Ok();
 }
 
-Status Rail(const json& j, const std::string& what, BSplineCurve* curve) {
+// An array of numbers at j[key].
+Status Numbers(const json& j, const std::string& key, const std::string& what,
+               std::vector<double>* out) {
+  if (!j.contains(key) || !j[key].is_array()) {
+    return Status::Error(what + "." + key + " must be an array");
+  }
+  out->resize(j[key].size());
+  for (size_t k = 0; k < out->size(); ++k) {
+    Status s = Number(j[key][k], what + "." + key + "[" + std::to_string(k) + "]", &(*out)[k]);
+    if (!s.ok()) return s;
+  }
+  return Status::Ok();
+}
+
+// An integer at j[key].
+Status Integer(const json& j, const std::string& key, const std::string& what, int* out) {
+  if (!j.contains(key) || !j[key].is_number_integer()) {
+    return Status::Error(what + "." + key + " must be an integer");
+  }
+  *out = j[key].get<int>();
+  return Status::Ok();
+}
+
+Status Rail(const json& j, const std::string& what, BSplineCurve* curve, int dimension = 3) {
   if (!j.is_object()) return Status::Error(what + " must be an object");
   if (!j.contains("degree") || !j["degree"].is_number_integer()) {
     return Status::Error(what + ".degree must be an integer");
@@ -69,15 +95,13 @@ Status Rail(const json& j, const std::string& what, BSplineCurve* curve) {
   if (!j.contains("control_points") || !j["control_points"].is_array()) {
     return Status::Error(what + ".control_points must be an array");
   }
-  std::vector<double> knots(j["knots"].size());
-  for (size_t k = 0; k < knots.size(); ++k) {
-    Status s = Number(j["knots"][k], what + ".knots[" + std::to_string(k) + "]", &knots[k]);
-    if (!s.ok()) return s;
-  }
+  std::vector<double> knots;
+  Status s = Numbers(j, "knots", what, &knots);
+  if (!s.ok()) return s;
   std::vector<Eigen::Vector3d> points(j["control_points"].size());
   for (size_t k = 0; k < points.size(); ++k) {
-    Status s = Point(j["control_points"][k], what + ".control_points[" + std::to_string(k) + "]",
-                     &points[k]);
+    s = Point(j["control_points"][k], what + ".control_points[" + std::to_string(k) + "]",
+              &points[k], dimension);
     if (!s.ok()) return s;
   }
   return BSplineCurve::Create(j["degree"].get<int>(), std::move(knots), std::move(points), what,
@@ -201,6 +225,96 @@ Status MachineFromJson(const std::string& path, const json& j, Machine* machine)
   return Status::Ok();
 }
 
+// "units" must be mm and "kind" `kind` (both optional).
+Status CheckKindAndUnits(const json& j, const std::string& path, const std::string& kind) {
+  std::string found_kind, units;
+  Status s = StringOr(j, "kind", path + ": file", kind, &found_kind);
+  if (s.ok()) s = StringOr(j, "units", path + ": file", "mm", &units);
+  if (!s.ok()) return s;
+  if (found_kind != kind) {
+    return Status::Error(path + ": kind \"" + found_kind + "\" is not supported (\"" + kind +
+                         "\")");
+  }
+  if (units != "mm") {
+    return Status::Error(path + ": units \"" + units + "\" are not supported (\"mm\")");
+  }
+  return Status::Ok();
+}
+
+Status BSplineSurfaceFromJson(const std::string& path, const json& j, BSplineSurface* surface) {
+  Status s = CheckKindAndUnits(j, path, "bspline_surface");
+  int degree_u = 0, degree_v = 0;
+  std::vector<double> knots_u, knots_v;
+  if (s.ok()) s = Integer(j, "degree_u", path + ": surface", &degree_u);
+  if (s.ok()) s = Integer(j, "degree_v", path + ": surface", &degree_v);
+  if (s.ok()) s = Numbers(j, "knots_u", path + ": surface", &knots_u);
+  if (s.ok()) s = Numbers(j, "knots_v", path + ": surface", &knots_v);
+  if (!s.ok()) return s;
+  if (!j.contains("control_points") || !j["control_points"].is_array()) {
+    return Status::Error(path + ": surface.control_points must be an array of rows");
+  }
+  const json& rows = j["control_points"];
+  std::vector<std::vector<Eigen::Vector3d>> net(rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const std::string row = path + ": surface.control_points[" + std::to_string(i) + "]";
+    if (!rows[i].is_array()) return Status::Error(row + " must be an array of points");
+    net[i].resize(rows[i].size());
+    for (size_t k = 0; k < net[i].size(); ++k) {
+      s = Point(rows[i][k], row + "[" + std::to_string(k) + "]", &net[i][k]);
+      if (!s.ok()) return s;
+    }
+  }
+  return BSplineSurface::Create(degree_u, degree_v, std::move(knots_u), std::move(knots_v),
+                                std::move(net), path + ": surface", surface);
+}
+
+Status PlacementFromJson(const std::string& path, const json& j, GuidePlacement* placement) {
+  if (!j.contains("placement")) return Status::Ok();
+  const json& p = j["placement"];
+  const std::string what = path + ": placement";
+  if (!p.is_object()) return Status::Error(what + " must be an object");
+  for (const auto& [key, value] : p.items()) {
+    if (key != "anchor_uv" && key != "lift_mm" && key != "spin_deg") {
+      return Status::Error(what + ": unknown key '" + key + "'");
+    }
+  }
+  Status s;
+  if (p.contains("anchor_uv")) {
+    std::vector<double> uv;
+    s = Numbers(p, "anchor_uv", what, &uv);
+    if (s.ok() && uv.size() != 2) s = Status::Error(what + ".anchor_uv must be [u, v]");
+    if (!s.ok()) return s;
+    placement->anchor_u = uv[0];
+    placement->anchor_v = uv[1];
+  }
+  s = Optional(p, "lift_mm", what, 1.0, &placement->lift_mm);
+  if (s.ok()) s = Optional(p, "spin_deg", what, 1.0, &placement->spin_deg);
+  if (!s.ok()) return s;
+  std::string why;
+  if (!placement->IsValid(&why)) return Status::Error(what + ": " + why);
+  return Status::Ok();
+}
+
+struct GuideCurves {
+  std::vector<BSplineCurve> curves;
+  GuidePlacement placement;
+};
+
+Status GuideCurvesFromJson(const std::string& path, const json& j, GuideCurves* guides) {
+  Status s = CheckKindAndUnits(j, path, "planar_curves");
+  if (s.ok()) s = PlacementFromJson(path, j, &guides->placement);
+  if (!s.ok()) return s;
+  if (!j.contains("curves") || !j["curves"].is_array() || j["curves"].empty()) {
+    return Status::Error(path + ": curves must be a non-empty array of curves");
+  }
+  guides->curves.resize(j["curves"].size());
+  for (size_t i = 0; i < guides->curves.size(); ++i) {
+    s = Rail(j["curves"][i], path + ": curves[" + std::to_string(i) + "]", &guides->curves[i], 2);
+    if (!s.ok()) return s;
+  }
+  return Status::Ok();
+}
+
 // Parses and converts; any type surprise nlohmann still raises is turned
 // into a status naming the file instead of escaping the library.
 template <typename Value, typename Convert>
@@ -216,6 +330,20 @@ Status ReadJsonFile(const std::string& path, Convert convert, Value* value) {
 }
 
 }  // namespace
+
+Status ReadBSplineSurfaceJson(const std::string& path, BSplineSurface* surface) {
+  return ReadJsonFile(path, BSplineSurfaceFromJson, surface);
+}
+
+Status ReadGuideCurvesJson(const std::string& path, std::vector<BSplineCurve>* curves,
+                           GuidePlacement* placement) {
+  GuideCurves guides;
+  Status s = ReadJsonFile(path, GuideCurvesFromJson, &guides);
+  if (!s.ok()) return s;
+  *curves = std::move(guides.curves);
+  *placement = guides.placement;
+  return Status::Ok();
+}
 
 Status ReadSurfaceJson(const std::string& path, RuledSurface* surface) {
   return ReadJsonFile(path, SurfaceFromJson, surface);
