@@ -14,6 +14,7 @@ struct Invocation {
 int RunGenerate(const Invocation& invocation);
 int RunEvaluate(const Invocation& invocation);
 int RunSmooth(const Invocation& invocation);
+int RunPencil(const Invocation& invocation);
 
 }  // namespace tpopt
 

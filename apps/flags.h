@@ -63,4 +63,16 @@ DECLARE_bool(insert_transitions);
 DECLARE_bool(smooth_outside_zones);
 DECLARE_bool(schedule_feed);
 DECLARE_double(resample_step_mm);
+
+// Cubic B-spline curve output (smooth, pencil)
+DECLARE_string(output_curve);
+DECLARE_double(curve_step_mm);
+DECLARE_string(fit_parametrization);
+DECLARE_string(fit_chord_height);
+DECLARE_double(fit_chord_height_mm);
+
+// pencil
+DECLARE_string(curve);
+DECLARE_double(ball_radius);
+DECLARE_double(interpolation_period_ms);
 #endif  // TPOPT_APPS_FLAGS_H_

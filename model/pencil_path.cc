@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "model/json_io.h"
 #include "model/surface_projection.h"
 
 namespace tpopt {
@@ -139,8 +140,9 @@ Status GeneratePencilRuns(const PencilGeometry& geometry, const std::vector<BSpl
     points.push_back(point);
     while (points.back().m < 1.0) {
       const double speed = points.back().dcc_dm.norm();
-      // A stalled guide (zero speed) still advances, by at most 1 % of m.
-      double m = points.back().m + (speed > 0 ? std::min(step_mm / speed, 0.01) : 0.01);
+      // A stalled guide (zero speed) still advances, and no step skips
+      // more than a tenth of the curve where it is slow.
+      double m = points.back().m + (speed > 1e-9 ? std::min(step_mm / speed, 0.1) : 0.01);
       const bool last = m >= 1.0;
       m = std::min(m, 1.0);
       s = geometry.At(guides[c], m, &uv, &point);
@@ -157,6 +159,16 @@ Status GeneratePencilRuns(const PencilGeometry& geometry, const std::vector<BSpl
       }
     }
   }
+  return Status::Ok();
+}
+
+Status LoadPencilJob(const std::string& surface_path, const std::string& curve_path,
+                     double ball_radius_mm, PencilJob* job) {
+  Status s = ReadBSplineSurfaceJson(surface_path, &job->surface);
+  if (s.ok()) s = ReadGuideCurvesJson(curve_path, &job->guides, &job->placement);
+  if (!s.ok()) return s;
+  s = PencilGeometry::Create(job->surface, job->placement, ball_radius_mm, &job->geometry);
+  if (!s.ok()) return Status::Error(curve_path + ": " + s.message());
   return Status::Ok();
 }
 

@@ -77,7 +77,8 @@ class PencilGeometry {
 
 // One guide curve's path: points from m = 0 to m = 1 whose CC points are
 // about one step apart, by the seed's first-order Taylor rule
-// m_{k+1} = m_k + step / |dCC/dm| (eq. (6)), the last one at m = 1.
+// m_{k+1} = m_k + step / |dCC/dm| (eq. (6)), at most 0.1 at a time, the
+// last one at m = 1.
 struct PencilRun {
   std::vector<PencilPoint> points;
 };
@@ -86,6 +87,23 @@ struct PencilRun {
 // curve would need more than 1e6 points.
 Status GeneratePencilRuns(const PencilGeometry& geometry, const std::vector<BSplineCurve>& guides,
                           const PencilOptions& options, std::vector<PencilRun>* runs);
+
+// Everything a pencil job reads: the surface, the guides, and the geometry
+// placed over that surface (which points into this object: not copyable).
+struct PencilJob {
+  PencilJob() = default;
+  PencilJob(const PencilJob&) = delete;
+  PencilJob& operator=(const PencilJob&) = delete;
+  BSplineSurface surface;
+  std::vector<BSplineCurve> guides;
+  GuidePlacement placement;
+  PencilGeometry geometry;
+};
+
+// Reads the surface and guide-curve JSON files (model/json_io.h) and places
+// the guides; errors name the file at fault.
+Status LoadPencilJob(const std::string& surface_path, const std::string& curve_path,
+                     double ball_radius_mm, PencilJob* job);
 
 }  // namespace tpopt
 

@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -67,13 +66,13 @@ TEST(PencilPathTest, OnAPlaneCcIsTheGuideDroppedAlongTheNormal) {
 }
 
 TEST(PencilPathTest, AnalyticDerivativesMatchFiniteDifferencesOnTheFreeFormSurface) {
-  BSplineSurface surface;
-  std::vector<BSplineCurve> guides;
-  GuidePlacement placement;
-  ASSERT_TRUE(ReadBSplineSurfaceJson(SourcePath("data/pencil/surface_120x120x55.json"), &surface).ok());
-  ASSERT_TRUE(ReadGuideCurvesJson(SourcePath("data/pencil/flower_guides.json"), &guides, &placement).ok());
-  PencilGeometry geometry;
-  ASSERT_TRUE(PencilGeometry::Create(surface, placement, 1.5, &geometry).ok());
+  PencilJob job;
+  ASSERT_TRUE(LoadPencilJob(SourcePath("data/pencil/surface_120x120x55.json"),
+                            SourcePath("data/pencil/flower_guides.json"), 1.5, &job)
+                  .ok());
+  const PencilGeometry& geometry = job.geometry;
+  const BSplineSurface& surface = job.surface;
+  const std::vector<BSplineCurve>& guides = job.guides;
   for (double m : {0.1, 0.33, 0.72}) {
     PencilPoint p, plus, minus;
     Eigen::Vector2d uv;

@@ -7,7 +7,7 @@ control net is ours: a free-form dome with a saddle and a tilt). Control
 points sit at the Greville abscissae in x and y, so x = 120 u and y = 120 v
 exactly (linear precision); only z is free-form.
 
-flower_guides.json: a five-petal flower (r = 12 + 5 cos 5t, as a closed
+flower_guides.json: a five-petal flower (r = 14 + 2 cos 5t, whose dips keep a radius of curvature above 3.8 mm: the dips of r = 12 + 5 cos 5t, of 0.4 mm, would be corners at 0.4 mm steps; as a closed
 clamped cubic B-spline whose control points are points of that curve) and
 an S stroke, placed over the middle of the surface, 30 mm up, turned 20
 degrees about the normal.
@@ -75,7 +75,7 @@ def flower():
     count = 61
     for k in range(count):
         t = 2 * math.pi * k / (count - 1)
-        r = 12 + 5 * math.cos(5 * t)
+        r = 14 + 2 * math.cos(5 * t)
         points.append([round(r * math.cos(t), 6), round(r * math.sin(t), 6)])
     return {"degree": 3, "knots": clamped_uniform_knots(count), "control_points": points}
 
