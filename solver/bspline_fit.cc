@@ -26,18 +26,18 @@ double SagittaOnCircle(double chord_mm, double kappa) {
   return 0.25 * chord_mm * chord_mm * kappa / (1.0 + std::sqrt(1.0 - half_sine * half_sine));
 }
 
-// The three chord heights of a window, mm.
-std::array<double, 3> ChordHeights(const std::array<Eigen::Vector3d, 4>& p,
-                                   const std::array<double, 3>& chords,
-                                   const LocalFitOptions& options) {
+// The three estimated arc lengths of a window's chords, mm.
+std::array<double, 3> WindowArcs(const std::array<Eigen::Vector3d, 4>& p,
+                                 const std::array<double, 3>& chords,
+                                 const LocalFitOptions& options) {
   if (options.chord_height == ChordHeight::kFixed) {
-    return {options.chord_height_mm, options.chord_height_mm, options.chord_height_mm};
+    return {ApproximateArcLength(chords[0], options.chord_height_mm),
+            ApproximateArcLength(chords[1], options.chord_height_mm),
+            ApproximateArcLength(chords[2], options.chord_height_mm)};
   }
-  const double k_first = CircleCurvature(p[0], p[1], p[2]);
-  const double k_last = CircleCurvature(p[1], p[2], p[3]);
-  return {SagittaOnCircle(chords[0], k_first),
-          SagittaOnCircle(chords[1], 0.5 * (k_first + k_last)),
-          SagittaOnCircle(chords[2], k_last)};
+  return {EstimatedArcLength(nullptr, p[0], p[1], &p[2]),
+          EstimatedArcLength(&p[0], p[1], p[2], &p[3]),
+          EstimatedArcLength(&p[1], p[2], p[3], nullptr)};
 }
 
 // Parameter interval of one chord under the parametrisation (unnormalised).
@@ -115,6 +115,23 @@ double ApproximateArcLength(double chord_mm, double chord_height_mm) {
   return chord_mm * theta / std::sin(theta);
 }
 
+double EstimatedArcLength(const Eigen::Vector3d* before, const Eigen::Vector3d& p0,
+                          const Eigen::Vector3d& p1, const Eigen::Vector3d* after) {
+  double kappa = 0.0;
+  int circles = 0;
+  if (before != nullptr) {
+    kappa += CircleCurvature(*before, p0, p1);
+    ++circles;
+  }
+  if (after != nullptr) {
+    kappa += CircleCurvature(p0, p1, *after);
+    ++circles;
+  }
+  const double chord = (p1 - p0).norm();
+  if (circles == 0) return chord;
+  return ApproximateArcLength(chord, SagittaOnCircle(chord, kappa / circles));
+}
+
 double ApproximateArcRadius(double chord_mm, double chord_height_mm) {
   if (!(chord_height_mm > 0.0)) return std::numeric_limits<double>::infinity();
   return chord_mm * chord_mm / (8.0 * chord_height_mm) + 0.5 * chord_height_mm;
@@ -154,12 +171,9 @@ Status FitWindow(const std::array<Eigen::Vector3d, 4>& p,
   if (!s.ok()) return s;
   const std::array<double, 3> chords = {(p[1] - p[0]).norm(), (p[2] - p[1]).norm(),
                                         (p[3] - p[2]).norm()};
-  const std::array<double, 3> heights = ChordHeights(p, chords, options);
-  std::array<double, 3> arcs, intervals;
-  for (int i = 0; i < 3; ++i) {
-    arcs[i] = ApproximateArcLength(chords[i], heights[i]);
-    intervals[i] = Interval(options.parametrization, chords[i], arcs[i]);
-  }
+  const std::array<double, 3> arcs = WindowArcs(p, chords, options);
+  std::array<double, 3> intervals;
+  for (int i = 0; i < 3; ++i) intervals[i] = Interval(options.parametrization, chords[i], arcs[i]);
   const double total = intervals[0] + intervals[1] + intervals[2];
   const double a = intervals[0] / total;
   const double b = (intervals[0] + intervals[1]) / total;

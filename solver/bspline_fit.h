@@ -74,6 +74,12 @@ struct LocalFitOptions {
 // `chord_height_mm` (both >= 0), mm. Equal to the chord when the height is 0.
 double ApproximateArcLength(double chord_mm, double chord_height_mm);
 
+// The arc over the chord p0 p1 whose sagitta is that of the circle through
+// the chord and its neighbour point(s) (mean curvature when both are given;
+// the chord itself when neither is): ChordHeight::kFromNeighbours.
+double EstimatedArcLength(const Eigen::Vector3d* before, const Eigen::Vector3d& p0,
+                          const Eigen::Vector3d& p1, const Eigen::Vector3d* after);
+
 // Radius of that arc, mm: L^2 / (8 delta) + delta / 2 (+infinity at delta = 0).
 double ApproximateArcRadius(double chord_mm, double chord_height_mm);
 
