@@ -15,39 +15,44 @@ double DistanceToSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
   return (a + t * ab - q).norm();
 }
 
-double DistanceToSpan(const CubicSpan& span, const Eigen::Vector3d& q) {
+double DistanceToCurve(const std::function<Eigen::Vector3d(double)>& curve, double lo, double hi,
+                       const Eigen::Vector3d& q) {
   constexpr int kSamples = 32;
+  auto at = [&](int i) { return lo + (hi - lo) * i / kSamples; };
+  auto d2_at = [&](double t) { return (curve(t) - q).squaredNorm(); };
   int best = 0;
   double best_d2 = INFINITY;
   for (int i = 0; i <= kSamples; ++i) {
-    const double d2 = (span.Point(double(i) / kSamples) - q).squaredNorm();
+    const double d2 = d2_at(at(i));
     if (d2 < best_d2) {
       best_d2 = d2;
       best = i;
     }
   }
-  double lo = std::max(0, best - 1) / double(kSamples);
-  double hi = std::min(kSamples, best + 1) / double(kSamples);
+  double a = at(std::max(0, best - 1)), b = at(std::min(kSamples, best + 1));
   const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
-  auto d2_at = [&](double t) { return (span.Point(t) - q).squaredNorm(); };
-  double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
+  double x1 = b - golden * (b - a), x2 = a + golden * (b - a);
   double f1 = d2_at(x1), f2 = d2_at(x2);
   for (int iteration = 0; iteration < 60; ++iteration) {
     if (f1 < f2) {
-      hi = x2;
+      b = x2;
       x2 = x1;
       f2 = f1;
-      x1 = hi - golden * (hi - lo);
+      x1 = b - golden * (b - a);
       f1 = d2_at(x1);
     } else {
-      lo = x1;
+      a = x1;
       x1 = x2;
       f1 = f2;
-      x2 = lo + golden * (hi - lo);
+      x2 = a + golden * (b - a);
       f2 = d2_at(x2);
     }
   }
   return std::sqrt(std::min({best_d2, f1, f2}));
+}
+
+double DistanceToSpan(const CubicSpan& span, const Eigen::Vector3d& q) {
+  return DistanceToCurve([&span](double t) { return span.Point(t); }, 0.0, 1.0, q);
 }
 
 SpanErrors MeasureSpanErrors(const std::vector<Eigen::Vector3d>& points,

@@ -17,9 +17,13 @@ namespace tpopt {
 double DistanceToSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                          const Eigen::Vector3d& q);
 
-// Distance from q to a cubic span, mm: the best of 33 samples, refined by
-// a golden-section search on the bracket around it (the distance is
-// unimodal there for the short spans of a tool path).
+// Distance from q to curve(t), t in [lo, hi], mm: the best of 33 samples,
+// refined by a golden-section search on the bracket around it (the
+// distance is unimodal there for the short pieces of a tool path).
+double DistanceToCurve(const std::function<Eigen::Vector3d(double)>& curve, double lo, double hi,
+                       const Eigen::Vector3d& q);
+
+// DistanceToCurve over a cubic span's [0, 1].
 double DistanceToSpan(const CubicSpan& span, const Eigen::Vector3d& q);
 
 struct SpanErrors {
