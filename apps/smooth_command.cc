@@ -78,6 +78,10 @@ int RunSmooth(const Invocation& invocation) {
       std::printf("  high_accuracy: %d iterations, %.3f s, cost %.4g -> %.4g\n", ha.iterations,
                   ha.solve_time_s, ha.initial_cost, ha.final_cost);
     }
+    if (bspline_output) {
+      std::printf("  B-spline output: %zu cubic spans, %zu poses written (points on the spans)\n",
+                  spans.size(), written.poses.size());
+    }
     if (result.feed.moves_slowed > 0) {
       std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",
                   result.feed.moves_slowed, result.feed.min_feed_mm_per_min);

@@ -193,6 +193,35 @@ TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
   EXPECT_FALSE(FileExists(out));
 }
 
+TEST(TpoptCliTest, SmoothWritesTheBSplineFitAsSpansAndPoints) {
+  TempDir dir;
+  const std::string cam = dir.File("cam.cls"), out = dir.File("out.cls");
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + kBlade +
+                             " --cutter_radius=4 --poses=40 --strategy=spo --quiet --out=" + cam))
+                .exit_code,
+            0);
+  auto r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + out +
+                            " --mode=spline --output_curve=bspline --curve_step_mm=0.5"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("B-spline output: 39 cubic spans"), std::string::npos) << r.output;
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t records = 0;
+  for (size_t at = text.find("NURBS/"); at != std::string::npos; at = text.find("NURBS/", at + 1)) {
+    ++records;
+  }
+  EXPECT_EQ(records, 39u);
+  // Reads back in silence, with the resampled points as poses.
+  r = RunCommand(Tpopt("evaluate --in=" + out + " --report=" + dir.File("e.json")));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+  EXPECT_GT(ReadJson(dir.File("e.json"))["poses_in"].get<int>(), 40);
+  r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + dir.File("x.cls") +
+                       " --mode=spline --output_curve=bspline --curve_step_mm=0"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_FALSE(FileExists(dir.File("x.cls")));
+}
+
 const std::string kPencilSurface = SourcePath("data/pencil/surface_120x120x55.json");
 const std::string kPencilCurves = SourcePath("data/pencil/flower_guides.json");
 
