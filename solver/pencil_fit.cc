@@ -1,5 +1,6 @@
 #include "solver/pencil_fit.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include <glog/logging.h>
