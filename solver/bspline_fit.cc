@@ -207,7 +207,8 @@ Status FitWindow(const std::array<Eigen::Vector3d, 4>& p,
 
 Status FitPolyline(const std::vector<Eigen::Vector3d>& points,
                    const std::vector<Eigen::Vector3d>& unit_tangents,
-                   const LocalFitOptions& options, std::vector<CubicSpan>* spans) {
+                   const LocalFitOptions& options, std::vector<CubicSpan>* spans,
+                   size_t index_offset) {
   const size_t n = points.size();
   if (n < 4) {
     return Status::Error("a cubic fit needs at least 4 CL points, got " + std::to_string(n));
@@ -227,7 +228,7 @@ Status FitPolyline(const std::vector<Eigen::Vector3d>& points,
     const std::array<Eigen::Vector3d, 4> t = {unit_tangents[first], unit_tangents[first + 1],
                                               unit_tangents[first + 2],
                                               unit_tangents[first + 3]};
-    Status s = FitWindow(p, t, options, first, &fit);
+    Status s = FitWindow(p, t, options, index_offset + first, &fit);
     if (!s.ok()) return s;
     if (first == 0) {
       CubicSpan head = fit.Spans()[0];

@@ -114,10 +114,12 @@ Status FitWindow(const std::array<Eigen::Vector3d, 4>& points,
 // (n - 1 spans). Interior spans are the middle spans of the windows
 // (i-1, i, i+1, i+2); the first and last spans, which no window has in its
 // middle, are the first span of the first window and the last span of the
-// last window (the seed is silent about the path's ends).
+// last window (the seed is silent about the path's ends). Errors name
+// points by `index_offset` + their index here (their index in the path).
 Status FitPolyline(const std::vector<Eigen::Vector3d>& points,
                    const std::vector<Eigen::Vector3d>& unit_tangents,
-                   const LocalFitOptions& options, std::vector<CubicSpan>* spans);
+                   const LocalFitOptions& options, std::vector<CubicSpan>* spans,
+                   size_t index_offset = 0);
 
 // Unit tangents of a polyline for data that comes without them: at an
 // interior point the tangent of the circle through it and its neighbours

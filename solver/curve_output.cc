@@ -102,8 +102,10 @@ Status FitToolPathCurves(const ToolPath& in, const CurveOutputOptions& options, 
     for (const ToolPose& p : run) points.push_back(p.p_w_tip);
     std::vector<CubicSpan> spans;
     Status s = EstimateUnitTangents(points, &tangents);
-    if (s.ok()) s = FitPolyline(points, tangents, options.fit, &spans);
-    if (!s.ok()) return Status::Error("run from pose " + std::to_string(first) + ": " + s.message());
+    if (s.ok()) s = FitPolyline(points, tangents, options.fit, &spans, first);
+    if (!s.ok()) {
+      return Status::Error("the run from pose " + std::to_string(first) + ": " + s.message());
+    }
     AppendFittedRun(run, spans, options.sample_step_mm, out, records);
   }
   return Status::Ok();
