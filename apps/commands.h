@@ -15,6 +15,7 @@ int RunGenerate(const Invocation& invocation);
 int RunEvaluate(const Invocation& invocation);
 int RunSmooth(const Invocation& invocation);
 int RunStripWidth(const Invocation& invocation);
+int RunPencil(const Invocation& invocation);
 
 }  // namespace tpopt
 

@@ -100,3 +100,24 @@ DEFINE_double(max_lead_deg, 40.0, "stripwidth: largest lead angle mpm and mpec m
 DEFINE_double(max_tilt_deg, 20.0, "stripwidth: largest |tilt| angle mpm and mpec may use, deg.");
 DEFINE_int32(section_samples, 80,
              "stripwidth: cross-section samples each side of a CC point, over 2 R.");
+
+DEFINE_string(output_curve, "points",
+              "smooth, pencil: points (the poses as they are) or bspline (the seed-004 local "
+              "cubic B-spline fit of each run, written as NURBS/ span records plus points "
+              "resampled on the spans; G-code gets the points only).");
+DEFINE_double(curve_step_mm, 0.1,
+              "--output_curve=bspline: largest chord step between resampled points, mm.");
+DEFINE_string(fit_parametrization, "approximate_arc",
+              "--output_curve=bspline: knots from approximate_arc (seed 004), chord, "
+              "centripetal or uniform parameters.");
+DEFINE_string(fit_chord_height, "neighbours",
+              "--output_curve=bspline: chord height delta of the approximate arc: fixed "
+              "(--fit_chord_height_mm, as the seed states it) or neighbours (the sagitta of the "
+              "circle through each chord and its neighbour point).");
+DEFINE_double(fit_chord_height_mm, 0.001,
+              "--fit_chord_height=fixed: delta, mm (the CL path's machining accuracy).");
+
+DEFINE_string(curve, "", "pencil: planar guide curves JSON (kind planar_curves).");
+DEFINE_double(ball_radius, 1.5, "pencil: ball-end cutter radius, mm.");
+DEFINE_double(interpolation_period_ms, 8.0,
+              "pencil: interpolation period, ms; CC points are feed x period apart.");

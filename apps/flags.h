@@ -76,4 +76,16 @@ DECLARE_double(min_lead_deg);
 DECLARE_double(max_lead_deg);
 DECLARE_double(max_tilt_deg);
 DECLARE_int32(section_samples);
+
+// Cubic B-spline curve output (smooth, pencil)
+DECLARE_string(output_curve);
+DECLARE_double(curve_step_mm);
+DECLARE_string(fit_parametrization);
+DECLARE_string(fit_chord_height);
+DECLARE_double(fit_chord_height_mm);
+
+// pencil
+DECLARE_string(curve);
+DECLARE_double(ball_radius);
+DECLARE_double(interpolation_period_ms);
 #endif  // TPOPT_APPS_FLAGS_H_

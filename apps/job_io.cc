@@ -59,9 +59,10 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
   return s;
 }
 
-Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path) {
+Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
+                    const std::vector<AptCurveSpan>& spans) {
   const std::string ext = Extension(path);
-  if (IsApt(ext)) return WriteApt(path, tool_path);
+  if (IsApt(ext)) return WriteApt(path, tool_path, spans);
   if (!IsGcode(ext)) return UnknownFormat(path, ext);
   GcodeOptions options;
   options.style = StyleOf(FLAGS_gcode_style);

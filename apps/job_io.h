@@ -5,7 +5,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "model/apt_io.h"
 #include "model/cutter.h"
 #include "model/machine.h"
 #include "model/ruled_surface.h"
@@ -21,8 +23,10 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
                     ToolPath* tool_path);
 
 // Writes a tool path by its extension (as LoadToolPath), whole or not at
-// all; G-code follows the --gcode_* flags.
-Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path);
+// all; G-code follows the --gcode_* flags. Curve spans go into APT files as
+// NURBS records; G-code gets the poses only.
+Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
+                    const std::vector<AptCurveSpan>& spans = {});
 
 // The machine file, or without one an ideal A/C table at the origin with
 // no limits (A/C metrics are exact; X/Y/Z are relative to that pivot).

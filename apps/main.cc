@@ -22,7 +22,10 @@ constexpr char kUsage[] =
     "            [--uv_distortion=AMP] [--axis_noise_deg=D] --out=P.cls\n"
     "  evaluate  --in=P [--surface=S] [--machine=M] --report=R.json\n"
     "  smooth    --in=P --out=Q [--surface=S] [--machine=M] --mode=spline|high_accuracy\n"
-    "            [weights...] --report=R.json\n"
+    "            [weights...] --report=R.json [--output_curve=points|bspline]\n"
+    "  pencil    --surface=S.json --curve=C.json --ball_radius=R --out=P.cls\n"
+    "            [--feed=F] [--interpolation_period_ms=T] [--output_curve=points|bspline]\n"
+    "            [--report=R.json]\n"
     "  stripwidth --surface=S.json --method=sturz|mpm|mpec --cutter=torus:R,r\n"
     "            --tolerance_mm=H --out=P.cls [--machine=M] [--report=R.json]\n"
     "\n"
@@ -66,6 +69,7 @@ int main(int argc, char** argv) {
   if (sub == "evaluate") return tpopt::RunEvaluate(invocation);
   if (sub == "smooth") return tpopt::RunSmooth(invocation);
   if (sub == "stripwidth") return tpopt::RunStripWidth(invocation);
+  if (sub == "pencil") return tpopt::RunPencil(invocation);
   std::fprintf(stderr, "tpopt: unknown subcommand '%s'\n%s", sub.c_str(), kUsage);
   return tpopt::kExitUsage;
 }

@@ -45,4 +45,35 @@ Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptio
   return Status::Ok();
 }
 
+Status CurveOutputOptionsFromFlags(bool* bspline, CurveOutputOptions* options) {
+  if (FLAGS_output_curve != "points" && FLAGS_output_curve != "bspline") {
+    return Status::Error("--output_curve=" + FLAGS_output_curve + " must be points or bspline");
+  }
+  *bspline = FLAGS_output_curve == "bspline";
+  const std::string& p = FLAGS_fit_parametrization;
+  if (p == "approximate_arc") {
+    options->fit.parametrization = Parametrization::kApproximateArc;
+  } else if (p == "chord") {
+    options->fit.parametrization = Parametrization::kChordLength;
+  } else if (p == "centripetal") {
+    options->fit.parametrization = Parametrization::kCentripetal;
+  } else if (p == "uniform") {
+    options->fit.parametrization = Parametrization::kUniform;
+  } else {
+    return Status::Error("--fit_parametrization=" + p +
+                         " must be approximate_arc, chord, centripetal or uniform");
+  }
+  if (FLAGS_fit_chord_height != "fixed" && FLAGS_fit_chord_height != "neighbours") {
+    return Status::Error("--fit_chord_height=" + FLAGS_fit_chord_height +
+                         " must be fixed or neighbours");
+  }
+  options->fit.chord_height =
+      FLAGS_fit_chord_height == "fixed" ? ChordHeight::kFixed : ChordHeight::kFromNeighbours;
+  options->fit.chord_height_mm = FLAGS_fit_chord_height_mm;
+  options->sample_step_mm = FLAGS_curve_step_mm;
+  std::string why;
+  if (!options->IsValid(&why)) return Status::Error(why);
+  return Status::Ok();
+}
+
 }  // namespace tpopt

@@ -7,6 +7,7 @@
 #include "model/deviation.h"
 #include "model/status.h"
 #include "solver/ceres_smoother.h"
+#include "solver/curve_output.h"
 #include "solver/spline_smoother.h"
 
 namespace tpopt {
@@ -14,6 +15,10 @@ namespace tpopt {
 Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion);
 
 Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptions* high_accuracy);
+
+// --output_curve (bspline or not), --curve_step_mm and the --fit_* flags;
+// errors are usage errors.
+Status CurveOutputOptionsFromFlags(bool* bspline, CurveOutputOptions* options);
 
 }  // namespace tpopt
 

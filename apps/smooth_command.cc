@@ -39,6 +39,9 @@ int RunSmooth(const Invocation& invocation) {
     s = Status::Error("--resample_step_mm=" + std::to_string(FLAGS_resample_step_mm) +
                       " must be >= 0");
   }
+  bool bspline_output = false;
+  CurveOutputOptions curve_options;
+  if (s.ok()) s = CurveOutputOptionsFromFlags(&bspline_output, &curve_options);
   if (!s.ok()) return Fail(kExitUsage, s.message());
 
   Job job;
@@ -55,7 +58,13 @@ int RunSmooth(const Invocation& invocation) {
     return Fail(kExitBadInput, FLAGS_in + ": " + s.message());
   }
   result.output.title = "tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in;
-  s = SaveToolPath(FLAGS_out, job.machine, result.output);
+  ToolPath written = result.output;
+  std::vector<AptCurveSpan> spans;
+  if (bspline_output) {
+    s = FitToolPathCurves(result.output, curve_options, &written, &spans);
+    if (!s.ok()) return Fail(kExitBadInput, FLAGS_out + ": the B-spline fit failed: " + s.message());
+  }
+  s = SaveToolPath(FLAGS_out, job.machine, written, spans);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   if (!FLAGS_report.empty()) {
     s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));
@@ -68,6 +77,10 @@ int RunSmooth(const Invocation& invocation) {
       const HighAccuracyReport& ha = result.high_accuracy;
       std::printf("  high_accuracy: %d iterations, %.3f s, cost %.4g -> %.4g\n", ha.iterations,
                   ha.solve_time_s, ha.initial_cost, ha.final_cost);
+    }
+    if (bspline_output) {
+      std::printf("  B-spline output: %zu cubic spans, %zu poses written (points on the spans)\n",
+                  spans.size(), written.poses.size());
     }
     if (result.feed.moves_slowed > 0) {
       std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",

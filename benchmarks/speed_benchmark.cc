@@ -13,6 +13,7 @@
 #include "model/deviation.h"
 #include "model/json_io.h"
 #include "model/path_generator.h"
+#include "solver/bspline_fit.h"
 #include "solver/ceres_smoother.h"
 #include "solver/spline_smoother.h"
 
@@ -121,6 +122,35 @@ void BM_AptRead(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * text.size()));
 }
 BENCHMARK(BM_AptRead)->Unit(benchmark::kMillisecond);
+
+// The seed-004 window fit (target: <= 1 us a window): 4 CL points on a
+// helix with exact tangents in, 6 control points out. Windows cycle over
+// 1,024 prepared ones so that the data are not one cached constant.
+void BM_FitWindow(benchmark::State& state) {
+  const bool from_neighbours = state.range(0) != 0;
+  constexpr int kWindows = 1024;
+  std::vector<std::array<Eigen::Vector3d, 4>> points(kWindows), tangents(kWindows);
+  const double speed = std::hypot(10.0, 2.0);
+  for (int w = 0; w < kWindows; ++w) {
+    for (int k = 0; k < 4; ++k) {
+      const double t = (0.4 * (w + k) + 0.1 * ((w * 7 + k * 3) % 5)) / speed;
+      points[w][k] = {10 * std::cos(t), 10 * std::sin(t), 2 * t};
+      tangents[w][k] = Eigen::Vector3d(-10 * std::sin(t), 10 * std::cos(t), 2) / speed;
+    }
+  }
+  LocalFitOptions options;
+  options.chord_height = from_neighbours ? ChordHeight::kFromNeighbours : ChordHeight::kFixed;
+  WindowFit fit;
+  int w = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(FitWindow(points[w], tangents[w], options, 0, &fit).ok());
+    benchmark::DoNotOptimize(fit.control_points[2]);
+    w = (w + 1) & (kWindows - 1);
+  }
+  state.SetLabel(from_neighbours ? "approx. arc, delta from neighbours"
+                                 : "approx. arc, fixed delta (seed)");
+}
+BENCHMARK(BM_FitWindow)->Arg(0)->Arg(1)->Unit(benchmark::kNanosecond);
 
 }  // namespace
 }  // namespace tpopt

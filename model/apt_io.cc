@@ -196,7 +196,7 @@ class AptReader {
     }
     static const std::set<std::string> kIgnored = {
         "MULTAX", "TOOL PATH", "PAINT", "END-OF-PATH", "FINI", "PARTNO", "LOADTL", "SPINDL",
-        "COOLNT", ""};
+        "COOLNT", "NURBS", ""};
     if (kIgnored.count(st.word) == 0 && warned_.insert(st.word).second && warnings_) {
       warnings_->push_back(name_ + ":" + std::to_string(st.line) + ": statement '" + st.word +
                            "' is not understood; skipped (warned once)");
@@ -260,9 +260,36 @@ Status CheckWritable(const std::string& path, const ToolPath& tool_path) {
   return Status::Ok();
 }
 
+Status CheckSpans(const std::string& path, const ToolPath& tool_path,
+                  const std::vector<AptCurveSpan>& spans) {
+  for (size_t k = 0; k < spans.size(); ++k) {
+    bool finite = true;
+    for (const Eigen::Vector3d& p : spans[k].bezier) {
+      finite = finite && p.allFinite() && p.cwiseAbs().maxCoeff() <= kMaxMagnitude;
+    }
+    const bool ordered = k == 0 || spans[k].after_pose > spans[k - 1].after_pose;
+    if (!finite || !ordered || spans[k].after_pose >= tool_path.poses.size()) {
+      return Status::Error(path + ": curve span " + std::to_string(k) + " after pose " +
+                           std::to_string(spans[k].after_pose) +
+                           " cannot be written (out of order, past the last pose or not finite)");
+    }
+  }
+  return Status::Ok();
+}
+
+std::string NurbsRecord(const AptCurveSpan& span) {
+  std::string out = "NURBS/3,4,0,0,0,0,1,1,1,1";
+  char buf[128];
+  for (const Eigen::Vector3d& p : span.bezier) {
+    std::snprintf(buf, sizeof(buf), ",$\n%.9f,%.9f,%.9f,1", p.x(), p.y(), p.z());
+    out += buf;
+  }
+  return out + "\n";
+}
+
 }  // namespace
 
-std::string FormatApt(const ToolPath& tool_path) {
+std::string FormatApt(const ToolPath& tool_path, const std::vector<AptCurveSpan>& spans) {
   std::string out;
   out.reserve(64 * tool_path.poses.size() + 256);
   char buf[256];
@@ -274,7 +301,9 @@ std::string FormatApt(const ToolPath& tool_path) {
     out += buf;
   }
   double feed = -1.0;
-  for (const ToolPose& p : tool_path.poses) {
+  size_t next_span = 0;
+  for (size_t i = 0; i < tool_path.poses.size(); ++i) {
+    const ToolPose& p = tool_path.poses[i];
     if (p.rapid) {
       out += "RAPID\n";
     } else if (p.feed_mm_per_min > 0 && p.feed_mm_per_min != feed) {
@@ -286,15 +315,20 @@ std::string FormatApt(const ToolPath& tool_path) {
     std::snprintf(buf, sizeof(buf), "GOTO/%.6f,%.6f,%.6f,%.9f,%.9f,%.9f\n", p.p_w_tip.x(),
                   p.p_w_tip.y(), p.p_w_tip.z(), p.a_w.x(), p.a_w.y(), p.a_w.z());
     out += buf;
+    if (next_span < spans.size() && spans[next_span].after_pose == i) {
+      out += NurbsRecord(spans[next_span++]);
+    }
   }
   out += "END-OF-PATH\nFINI\n";
   return out;
 }
 
-Status WriteApt(const std::string& path, const ToolPath& tool_path) {
+Status WriteApt(const std::string& path, const ToolPath& tool_path,
+                const std::vector<AptCurveSpan>& spans) {
   Status s = CheckWritable(path, tool_path);
+  if (s.ok()) s = CheckSpans(path, tool_path, spans);
   if (!s.ok()) return s;
-  return WriteFileAtomically(path, FormatApt(tool_path));
+  return WriteFileAtomically(path, FormatApt(tool_path, spans));
 }
 
 }  // namespace tpopt

@@ -7,16 +7,21 @@
 // TLDATA/MILL,d,r,l,... and CUTTER/d[,r,...] give the cutter, FEDRAT/[MMPM,]f
 // the modal feed in mm/min, RAPID makes the next GOTO a rapid; MULTAX,
 // UNITS/MM, TOOL PATH, PAINT, END-OF-PATH, FINI, PARTNO, LOADTL, SPINDL and
-// COOLNT carry nothing tpopt needs. Any other statement is skipped with one
+// COOLNT carry nothing tpopt needs; NURBS (tpopt's own curve records, see
+// AptCurveSpan) is skipped in silence because the GOTOs after it carry the
+// same curve as points. Any other statement is skipped with one
 // warning per distinct major word (its first word, or TOOL PATH). Words are
 // case-insensitive; blanks, CRLF, and blank or comment lines inside a `$`
 // continuation are tolerated. Numbers are plain decimals (no hex, NaN, Inf).
 #ifndef TPOPT_MODEL_APT_IO_H_
 #define TPOPT_MODEL_APT_IO_H_
 
+#include <array>
 #include <istream>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "model/status.h"
 #include "model/tool_path.h"
@@ -34,19 +39,35 @@ Status ReadApt(const std::string& path, ToolPath* tool_path, std::vector<std::st
 Status ReadAptStream(std::istream& in, const std::string& name, ToolPath* tool_path,
                      std::vector<std::string>* warnings);
 
+// A cubic span of the tip path, mm in W, for controllers with spline
+// interpolation. It is written right after the GOTO of pose `after_pose`
+// (its start point, bezier[0]) as
+//   NURBS/3,4,0,0,0,0,1,1,1,1,$
+//   x0,y0,z0,1,$  ...  x3,y3,z3,1
+// (degree, number of control points, clamped knots, then each control
+// point with weight 1): one Bezier span, non-rational. The GOTOs that
+// follow, up to the next NURBS or RAPID, are points of that span, densely
+// resampled for controllers without spline support, its end point last.
+struct AptCurveSpan {
+  size_t after_pose = 0;
+  std::array<Eigen::Vector3d, 4> bezier;
+};
+
 // APT text: a `$$` header with the title (control characters blanked),
 // UNITS/MM, MULTAX/ON, TLDATA/MILL,d,0,l when the cutter is known (taper is
 // not written), FEDRAT/MMPM (10 significant digits) when the feed changes,
 // RAPID before rapids, GOTO with 6 decimals of mm and 9 of the axis,
 // END-OF-PATH and FINI. Read back, tips agree within 1e-6 mm and axes
 // within 1e-9.
-std::string FormatApt(const ToolPath& tool_path);
+// `spans` (sorted by after_pose) are written as NURBS records.
+std::string FormatApt(const ToolPath& tool_path, const std::vector<AptCurveSpan>& spans = {});
 
 // Writes FormatApt atomically (model/atomic_file.h). Refuses, writing
 // nothing, a path ReadApt would reject: no poses, or a pose (named by its
 // 0-based index) with a non-finite value, a coordinate beyond 1e6 mm or a
-// zero axis.
-Status WriteApt(const std::string& path, const ToolPath& tool_path);
+// zero axis; or a span after no pose, out of order, or not finite.
+Status WriteApt(const std::string& path, const ToolPath& tool_path,
+                const std::vector<AptCurveSpan>& spans = {});
 
 }  // namespace tpopt
 

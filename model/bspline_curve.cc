@@ -13,137 +13,33 @@ Status BSplineCurve::Create(int degree, std::vector<double> knots,
                             std::vector<Eigen::Vector3d> control_points,
                             const std::string& what, BSplineCurve* curve) {
   CHECK(curve != nullptr);
-  std::ostringstream err;
-  if (degree < 1 || degree > kMaxDegree) {
-    err << what << ": degree " << degree << " is outside [1, " << kMaxDegree
-        << "]";
-    return Status::Error(err.str());
-  }
-  const size_t n = control_points.size();
-  if (n < static_cast<size_t>(degree) + 1) {
-    err << what << ": " << n << " control points are too few for degree "
-        << degree << " (need at least " << degree + 1 << ")";
-    return Status::Error(err.str());
-  }
-  if (knots.size() != n + degree + 1) {
-    err << what << ": " << knots.size() << " knots, but " << n
-        << " control points of degree " << degree << " need " << n + degree + 1;
-    return Status::Error(err.str());
-  }
-  for (size_t i = 0; i < knots.size(); ++i) {
-    if (!std::isfinite(knots[i])) {
-      err << what << ": knot " << i << " is not finite (" << knots[i] << ")";
-      return Status::Error(err.str());
-    }
-    if (i > 0 && knots[i] < knots[i - 1]) {
-      err << what << ": knots decrease at index " << i << " (" << knots[i - 1]
-          << " then " << knots[i] << ")";
-      return Status::Error(err.str());
-    }
-  }
-  for (int i = 1; i <= degree; ++i) {
-    if (knots[i] != knots[0] || knots[knots.size() - 1 - i] != knots.back()) {
-      err << what << ": knot vector is not clamped (the first and last "
-          << degree + 1 << " knots must be equal)";
-      return Status::Error(err.str());
-    }
-  }
-  const double lo = knots.front(), hi = knots.back();
-  if (!(hi > lo)) {
-    err << what << ": knot range is empty [" << lo << ", " << hi << "]";
-    return Status::Error(err.str());
-  }
-  for (size_t i = 0; i < n; ++i) {
+  Status s = NormalizeClampedKnots(degree, control_points.size(), what, &knots);
+  if (!s.ok()) return s;
+  for (size_t i = 0; i < control_points.size(); ++i) {
     if (!control_points[i].allFinite()) {
+      std::ostringstream err;
       err << what << ": control point " << i << " is not finite";
       return Status::Error(err.str());
     }
   }
-  for (double& k : knots) k = (k - lo) / (hi - lo);
-  knots.front() = 0.0;
-  knots.back() = 1.0;
   curve->degree_ = degree;
   curve->knots_ = std::move(knots);
   curve->control_points_ = std::move(control_points);
   return Status::Ok();
 }
 
-int BSplineCurve::FindSpan(double u) const {
-  const int n = static_cast<int>(control_points_.size()) - 1;
-  if (u >= knots_[n + 1]) return n;
-  if (u <= knots_[degree_]) {
-    // Skip any zero-length spans at the start.
-    int span = degree_;
-    while (span < n && knots_[span + 1] <= u) ++span;
-    return span;
-  }
-  // Largest span with knots_[span] <= u < knots_[span + 1].
-  auto it = std::upper_bound(knots_.begin() + degree_, knots_.begin() + n + 1, u);
-  return static_cast<int>(it - knots_.begin()) - 1;
-}
-
-std::array<Eigen::Vector3d, 4> BSplineCurve::Evaluate(double u,
-                                                      int max_order) const {
+std::array<Eigen::Vector3d, 4> BSplineCurve::Evaluate(double u, int max_order) const {
   CHECK(!control_points_.empty()) << "Evaluate on an empty curve";
   CHECK(max_order >= 0 && max_order <= 3);
   u = std::clamp(u, 0.0, 1.0);
   const int p = degree_;
-  const int span = FindSpan(u);
-  const int nd = std::min(max_order, p);
-
-  // Piegl & Tiller A2.3, with stack buffers sized by kMaxDegree.
-  constexpr int K = kMaxDegree + 1;
-  double ndu[K][K];
-  double left[K], right[K];
-  ndu[0][0] = 1.0;
-  for (int j = 1; j <= p; ++j) {
-    left[j] = u - knots_[span + 1 - j];
-    right[j] = knots_[span + j] - u;
-    double saved = 0.0;
-    for (int r = 0; r < j; ++r) {
-      ndu[j][r] = right[r + 1] + left[j - r];
-      const double temp = ndu[r][j - 1] / ndu[j][r];
-      ndu[r][j] = saved + right[r + 1] * temp;
-      saved = left[j - r] * temp;
-    }
-    ndu[j][j] = saved;
-  }
-  double ders[4][K];
-  for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
-  double a[2][K];
-  for (int r = 0; r <= p; ++r) {
-    int s1 = 0, s2 = 1;
-    a[0][0] = 1.0;
-    for (int k = 1; k <= nd; ++k) {
-      double d = 0.0;
-      const int rk = r - k, pk = p - k;
-      if (r >= k) {
-        a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
-        d = a[s2][0] * ndu[rk][pk];
-      }
-      const int j1 = (rk >= -1) ? 1 : -rk;
-      const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
-      for (int j = j1; j <= j2; ++j) {
-        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
-        d += a[s2][j] * ndu[rk + j][pk];
-      }
-      if (r <= pk) {
-        a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
-        d += a[s2][k] * ndu[r][pk];
-      }
-      ders[k][r] = d;
-      std::swap(s1, s2);
-    }
-  }
-  double factor = p;
-  for (int k = 1; k <= nd; ++k) {
-    for (int j = 0; j <= p; ++j) ders[k][j] *= factor;
-    factor *= (p - k);
-  }
-
+  const int span =
+      FindKnotSpan(knots_, p, static_cast<int>(control_points_.size()), u);
+  BasisDerivatives ders;
+  ComputeBasisDerivatives(knots_, p, span, u, max_order, ders);
   std::array<Eigen::Vector3d, 4> out;
   for (auto& v : out) v.setZero();
-  for (int k = 0; k <= nd; ++k) {
+  for (int k = 0; k <= std::min(max_order, p); ++k) {
     for (int j = 0; j <= p; ++j) {
       out[k] += ders[k][j] * control_points_[span - p + j];
     }

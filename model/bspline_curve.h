@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "model/bspline_basis.h"
 #include "model/status.h"
 
 namespace tpopt {
@@ -21,7 +22,7 @@ class BSplineCurve {
   BSplineCurve() = default;
 
   // Highest degree accepted; evaluation uses fixed-size stack buffers.
-  static constexpr int kMaxDegree = 15;
+  static constexpr int kMaxDegree = kMaxBSplineDegree;
 
   // Validates and builds a curve. Requirements: 1 <= degree <= kMaxDegree;
   // knots.size() == control_points.size() + degree + 1; knots finite and
@@ -49,8 +50,6 @@ class BSplineCurve {
   double CurvatureRadius(double u) const;
 
  private:
-  int FindSpan(double u) const;
-
   int degree_ = 0;
   std::vector<double> knots_;
   std::vector<Eigen::Vector3d> control_points_;

@@ -43,11 +43,13 @@ Status JsonNumber(const json& j, const std::string& what, double* out) {
   return Status::Ok();
 }
 
-Status JsonPoint(const json& j, const std::string& what, Eigen::Vector3d* p) {
-  if (!j.is_array() || j.size() != 3) {
-    return Status::Error(what + " must be [x, y, z], got " + j.dump());
+Status JsonPoint(const json& j, const std::string& what, Eigen::Vector3d* p, int dimension) {
+  if (!j.is_array() || static_cast<int>(j.size()) != dimension) {
+    return Status::Error(what + " must be " + (dimension == 3 ? "[x, y, z]" : "[x, y]") +
+                         ", got " + j.dump());
   }
-  for (int k = 0; k < 3; ++k) {
+  p->setZero();
+  for (int k = 0; k < dimension; ++k) {
     Status s = JsonNumber(j[k], what + "[" + std::to_string(k) + "]", &(*p)[k]);
     if (!s.ok()) return s;
   }

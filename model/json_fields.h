@@ -19,8 +19,10 @@ Status ParseJsonFile(const std::string& path, nlohmann::json* out);
 // A finite number with |v| <= 1e6; `what` names it in messages.
 Status JsonNumber(const nlohmann::json& j, const std::string& what, double* out);
 
-// [x, y, z] of such numbers.
-Status JsonPoint(const nlohmann::json& j, const std::string& what, Eigen::Vector3d* p);
+// [x, y, z] of such numbers, or [x, y] (z = 0) when `dimension` is 2
+// (planar curves).
+Status JsonPoint(const nlohmann::json& j, const std::string& what, Eigen::Vector3d* p,
+                 int dimension = 3);
 
 // An array of such numbers.
 Status JsonNumbers(const nlohmann::json& j, const std::string& what, std::vector<double>* out);

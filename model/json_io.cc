@@ -15,7 +15,23 @@ using nlohmann::json;
 
 constexpr double kDegToRad = M_PI / 180.0;
 
-Status Rail(const json& j, const std::string& what, BSplineCurve* curve) {
+// An array of numbers at j[key].
+Status NumbersAt(const json& j, const std::string& key, const std::string& what,
+                 std::vector<double>* out) {
+  if (!j.contains(key)) return Status::Error(what + "." + key + " must be an array");
+  return JsonNumbers(j[key], what + "." + key, out);
+}
+
+// An integer at j[key].
+Status IntegerAt(const json& j, const std::string& key, const std::string& what, int* out) {
+  if (!j.contains(key) || !j[key].is_number_integer()) {
+    return Status::Error(what + "." + key + " must be an integer");
+  }
+  *out = j[key].get<int>();
+  return Status::Ok();
+}
+
+Status Rail(const json& j, const std::string& what, BSplineCurve* curve, int dimension = 3) {
   if (!j.is_object()) return Status::Error(what + " must be an object");
   if (!j.contains("degree") || !j["degree"].is_number_integer()) {
     return Status::Error(what + ".degree must be an integer");
@@ -30,7 +46,7 @@ Status Rail(const json& j, const std::string& what, BSplineCurve* curve) {
   std::vector<Eigen::Vector3d> points(j["control_points"].size());
   for (size_t k = 0; k < points.size(); ++k) {
     s = JsonPoint(j["control_points"][k], what + ".control_points[" + std::to_string(k) + "]",
-                  &points[k]);
+                  &points[k], dimension);
     if (!s.ok()) return s;
   }
   return BSplineCurve::Create(j["degree"].get<int>(), std::move(knots), std::move(points), what,
@@ -142,7 +158,111 @@ Status MachineFromJson(const std::string& path, const json& j, Machine* machine)
   return Status::Ok();
 }
 
+// "units" must be mm and "kind" `kind` (both optional).
+Status CheckKindAndUnits(const json& j, const std::string& path, const std::string& kind) {
+  std::string found_kind, units;
+  Status s = JsonStringOr(j, "kind", path + ": file", kind, &found_kind);
+  if (s.ok()) s = JsonStringOr(j, "units", path + ": file", "mm", &units);
+  if (!s.ok()) return s;
+  if (found_kind != kind) {
+    return Status::Error(path + ": kind \"" + found_kind + "\" is not supported (\"" + kind +
+                         "\")");
+  }
+  if (units != "mm") {
+    return Status::Error(path + ": units \"" + units + "\" are not supported (\"mm\")");
+  }
+  return Status::Ok();
+}
+
+Status BSplineSurfaceFromJson(const std::string& path, const json& j, BSplineSurface* surface) {
+  Status s = CheckKindAndUnits(j, path, "bspline_surface");
+  int degree_u = 0, degree_v = 0;
+  std::vector<double> knots_u, knots_v;
+  if (s.ok()) s = IntegerAt(j, "degree_u", path + ": surface", &degree_u);
+  if (s.ok()) s = IntegerAt(j, "degree_v", path + ": surface", &degree_v);
+  if (s.ok()) s = NumbersAt(j, "knots_u", path + ": surface", &knots_u);
+  if (s.ok()) s = NumbersAt(j, "knots_v", path + ": surface", &knots_v);
+  if (!s.ok()) return s;
+  if (!j.contains("control_points") || !j["control_points"].is_array()) {
+    return Status::Error(path + ": surface.control_points must be an array of rows");
+  }
+  const json& rows = j["control_points"];
+  std::vector<std::vector<Eigen::Vector3d>> net(rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const std::string row = path + ": surface.control_points[" + std::to_string(i) + "]";
+    if (!rows[i].is_array()) return Status::Error(row + " must be an array of points");
+    net[i].resize(rows[i].size());
+    for (size_t k = 0; k < net[i].size(); ++k) {
+      s = JsonPoint(rows[i][k], row + "[" + std::to_string(k) + "]", &net[i][k]);
+      if (!s.ok()) return s;
+    }
+  }
+  return BSplineSurface::Create(degree_u, degree_v, std::move(knots_u), std::move(knots_v),
+                                std::move(net), path + ": surface", surface);
+}
+
+Status PlacementFromJson(const std::string& path, const json& j, GuidePlacement* placement) {
+  if (!j.contains("placement")) return Status::Ok();
+  const json& p = j["placement"];
+  const std::string what = path + ": placement";
+  if (!p.is_object()) return Status::Error(what + " must be an object");
+  for (const auto& [key, value] : p.items()) {
+    if (key != "anchor_uv" && key != "lift_mm" && key != "spin_deg") {
+      return Status::Error(what + ": unknown key '" + key + "'");
+    }
+  }
+  Status s;
+  if (p.contains("anchor_uv")) {
+    std::vector<double> uv;
+    s = NumbersAt(p, "anchor_uv", what, &uv);
+    if (s.ok() && uv.size() != 2) s = Status::Error(what + ".anchor_uv must be [u, v]");
+    if (!s.ok()) return s;
+    placement->anchor_u = uv[0];
+    placement->anchor_v = uv[1];
+  }
+  s = Optional(p, "lift_mm", what, 1.0, &placement->lift_mm);
+  if (s.ok()) s = Optional(p, "spin_deg", what, 1.0, &placement->spin_deg);
+  if (!s.ok()) return s;
+  std::string why;
+  if (!placement->IsValid(&why)) return Status::Error(what + ": " + why);
+  return Status::Ok();
+}
+
+struct GuideCurves {
+  std::vector<BSplineCurve> curves;
+  GuidePlacement placement;
+};
+
+Status GuideCurvesFromJson(const std::string& path, const json& j, GuideCurves* guides) {
+  Status s = CheckKindAndUnits(j, path, "planar_curves");
+  if (s.ok()) s = PlacementFromJson(path, j, &guides->placement);
+  if (!s.ok()) return s;
+  if (!j.contains("curves") || !j["curves"].is_array() || j["curves"].empty()) {
+    return Status::Error(path + ": curves must be a non-empty array of curves");
+  }
+  guides->curves.resize(j["curves"].size());
+  for (size_t i = 0; i < guides->curves.size(); ++i) {
+    s = Rail(j["curves"][i], path + ": curves[" + std::to_string(i) + "]", &guides->curves[i], 2);
+    if (!s.ok()) return s;
+  }
+  return Status::Ok();
+}
+
 }  // namespace
+
+Status ReadBSplineSurfaceJson(const std::string& path, BSplineSurface* surface) {
+  return ReadJsonFile(path, BSplineSurfaceFromJson, surface);
+}
+
+Status ReadGuideCurvesJson(const std::string& path, std::vector<BSplineCurve>* curves,
+                           GuidePlacement* placement) {
+  GuideCurves guides;
+  Status s = ReadJsonFile(path, GuideCurvesFromJson, &guides);
+  if (!s.ok()) return s;
+  *curves = std::move(guides.curves);
+  *placement = guides.placement;
+  return Status::Ok();
+}
 
 Status ReadSurfaceJson(const std::string& path, RuledSurface* surface) {
   return ReadJsonFile(path, SurfaceFromJson, surface);

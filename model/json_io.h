@@ -5,7 +5,12 @@
 
 #include <string>
 
+#include <vector>
+
+#include "model/bspline_curve.h"
+#include "model/bspline_surface.h"
 #include "model/machine.h"
+#include "model/pencil_path.h"
 #include "model/ruled_surface.h"
 #include "model/status.h"
 
@@ -20,6 +25,19 @@ Status ReadSurfaceJson(const std::string& path, RuledSurface* surface);
 // max_acceleration, max_jerk}, ...}}: mm and degrees in the file, radians
 // inside. Absent keys mean no limit (or 0 for the offsets).
 Status ReadMachineJson(const std::string& path, Machine* machine);
+
+// {"name", "units": "mm", "kind": "bspline_surface", "degree_u", "degree_v"
+// (1..3), "knots_u", "knots_v", "control_points": [[[x, y, z], ...], ...]}
+// with control_points[i][j], i along u.
+Status ReadBSplineSurfaceJson(const std::string& path, BSplineSurface* surface);
+
+// Planar guide curves for a pencil path: {"name", "units": "mm", "kind":
+// "planar_curves", "placement": {"anchor_uv": [u, v], "lift_mm",
+// "spin_deg"} (each optional, GuidePlacement's defaults), "curves":
+// [{"degree", "knots", "control_points": [[x, y], ...]}, ...]}. The curves
+// come back in the plane z = 0.
+Status ReadGuideCurvesJson(const std::string& path, std::vector<BSplineCurve>* curves,
+                           GuidePlacement* placement);
 
 }  // namespace tpopt
 

@@ -208,6 +208,40 @@ TEST(AptIoTest, WriteRefusesWhatCannotBeReadBack) {
   EXPECT_FALSE(testing::FileExists(dir.File("z.cls")));
 }
 
+TEST(AptIoTest, CurveSpansAreNurbsRecordsAfterTheirStartAndReadBackInSilence) {
+  ToolPath path;
+  for (int i = 0; i < 4; ++i) {
+    ToolPose pose;
+    pose.p_w_tip = {double(i), 0, 0};
+    path.poses.push_back(pose);
+  }
+  AptCurveSpan span;
+  span.after_pose = 1;
+  span.bezier = {Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1.25, 0.5, 0),
+                 Eigen::Vector3d(1.75, -0.5, 0), Eigen::Vector3d(2, 0, 1e-10)};
+  const std::string text = FormatApt(path, {span});
+  const std::string record =
+      "GOTO/1.000000,0.000000,0.000000,0.000000000,0.000000000,1.000000000\n"
+      "NURBS/3,4,0,0,0,0,1,1,1,1,$\n1.000000000,0.000000000,0.000000000,1,$\n"
+      "1.250000000,0.500000000,0.000000000,1,$\n1.750000000,-0.500000000,0.000000000,1,$\n"
+      "2.000000000,0.000000000,0.000000000,1\nGOTO/2.000000";
+  EXPECT_NE(text.find(record), std::string::npos) << text;
+  ToolPath back;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(Parse(text, &back, &warnings).ok());
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(back.poses.size(), 4u);
+
+  testing::TempDir dir;
+  span.after_pose = 4;  // past the last pose
+  Status s = WriteApt(dir.File("s.cls"), path, {span});
+  EXPECT_NE(s.message().find("curve span 0 after pose 4"), std::string::npos) << s.message();
+  span.after_pose = 2;
+  span.bezier[2].x() = INFINITY;
+  EXPECT_FALSE(WriteApt(dir.File("s.cls"), path, {span}).ok());
+  EXPECT_FALSE(testing::FileExists(dir.File("s.cls")));
+}
+
 TEST(AptIoTest, RoundTripsThroughAFile) {
   ToolPath path;
   path.title = "round trip";

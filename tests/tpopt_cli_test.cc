@@ -189,5 +189,87 @@ TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
   EXPECT_FALSE(FileExists(out));
 }
 
+TEST(TpoptCliTest, SmoothWritesTheBSplineFitAsSpansAndPoints) {
+  TempDir dir;
+  const std::string cam = dir.File("cam.cls"), out = dir.File("out.cls");
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + kBlade +
+                             " --cutter_radius=4 --poses=40 --strategy=spo --quiet --out=" + cam))
+                .exit_code,
+            0);
+  auto r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + out +
+                            " --mode=spline --output_curve=bspline --curve_step_mm=0.5"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("B-spline output: 39 cubic spans"), std::string::npos) << r.output;
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t records = 0;
+  for (size_t at = text.find("NURBS/"); at != std::string::npos; at = text.find("NURBS/", at + 1)) {
+    ++records;
+  }
+  EXPECT_EQ(records, 39u);
+  // Reads back in silence, with the resampled points as poses.
+  r = RunCommand(Tpopt("evaluate --in=" + out + " --report=" + dir.File("e.json")));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+  EXPECT_GT(ReadJson(dir.File("e.json"))["poses_in"].get<int>(), 40);
+  r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + dir.File("x.cls") +
+                       " --mode=spline --output_curve=bspline --curve_step_mm=0"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_FALSE(FileExists(dir.File("x.cls")));
+}
+
+const std::string kPencilSurface = SourcePath("data/pencil/surface_120x120x55.json");
+const std::string kPencilCurves = SourcePath("data/pencil/flower_guides.json");
+
+TEST(TpoptCliTest, PencilWritesTheFittedPathAndItsChordErrors) {
+  TempDir dir;
+  const std::string out = dir.File("pencil.cls"), report = dir.File("pencil.json");
+  auto r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" + kPencilCurves +
+                            " --ball_radius=1.5 --feed=3000 --output_curve=bspline --out=" + out +
+                            " --report=" + report + " --quiet"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = ReadJson(report);
+  EXPECT_EQ(j["runs"], 2);
+  EXPECT_DOUBLE_EQ(j["step_mm"].get<double>(), 0.4);
+  EXPECT_GE(j["chord_over_fit_error"].get<double>(), 10.0);
+  EXPECT_EQ(j["folded_points"], 0);
+  // The file reads back through the evaluator: spans are skipped in
+  // silence, the resampled points are the poses.
+  r = RunCommand(Tpopt("evaluate --in=" + out + " --report=" + dir.File("e.json")));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
+  EXPECT_EQ(ReadJson(dir.File("e.json"))["poses_in"], j["poses_out"]);
+  std::ifstream in(out);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("NURBS/3,4,0,0,0,0,1,1,1,1"), std::string::npos);
+}
+
+TEST(TpoptCliTest, PencilBadInputAndUsageWriteNothing) {
+  TempDir dir;
+  const std::string out = dir.File("pencil.cls");
+  std::ofstream(dir.File("bad.json"))
+      << R"({"kind": "planar_curves", "placement": {"anchor_uv": [0.5, 2]}, "curves": []})";
+  auto r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" +
+                            dir.File("bad.json") + " --out=" + out));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find(dir.File("bad.json")), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("anchor_v = 2"), std::string::npos) << r.output;
+  // A guide larger than the surface: the projection misses it.
+  std::ofstream(dir.File("wide.json"))
+      << R"({"kind": "planar_curves", "curves": [{"degree": 1, "knots": [0, 0, 1, 1],
+             "control_points": [[0, 0], [200, 0]]}]})";
+  r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" + dir.File("wide.json") +
+                       " --out=" + out));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("curve 0, guide parameter m = "), std::string::npos) << r.output;
+  r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" + kPencilCurves +
+                       " --ball_radius=0 --out=" + out));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" + kPencilCurves +
+                       " --output_curve=nurbs --out=" + out));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_FALSE(FileExists(out));
+}
+
 }  // namespace
 }  // namespace tpopt
