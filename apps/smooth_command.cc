@@ -7,6 +7,8 @@
 #include "apps/flags.h"
 #include "apps/job_io.h"
 #include "apps/options_from_flags.h"
+#include "apps/picture_outputs.h"
+#include "apps/progress_display.h"
 #include "apps/report.h"
 #include "model/apt_io.h"
 #include "solver/smoothing_pipeline.h"
@@ -19,12 +21,59 @@ int Fail(int code, const std::string& message) {
   return code;
 }
 
+// Shows the pipeline's stages and Ceres' iterations on `progress`; null
+// detaches them.
+void ReportProgressTo(ProgressDisplay* progress, SmoothingSettings* settings) {
+  if (progress == nullptr) {
+    settings->on_stage = nullptr;
+    settings->high_accuracy.on_iteration = nullptr;
+    return;
+  }
+  settings->on_stage = [progress](const std::string& stage) { progress->SetStage(stage); };
+  settings->high_accuracy.on_iteration = [progress](int iteration, double cost) {
+    char detail[64];
+    std::snprintf(detail, sizeof(detail), "iteration %d, cost %.4e", iteration, cost);
+    progress->SetDetail(detail);
+  };
+}
+
+// The output path, then the report, HTML and VTK files the flags ask for.
+Status WriteOutputs(const Invocation& invocation, const Job& job, const SmoothingResult& result) {
+  Status s = SaveToolPath(FLAGS_out, job.machine, result.output);
+  if (s.ok() && !FLAGS_report.empty()) {
+    s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));
+  }
+  if (s.ok()) {
+    s = WritePictures("tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in,
+                      invocation.command_line,
+                      {{"before", &job.path, &result.input_metrics},
+                       {"after", &result.output, &result.output_metrics}},
+                      job);
+  }
+  return s;
+}
+
+void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& result) {
+  std::printf("%s%s", Summary("input ", result.input_metrics).c_str(),
+              Summary("output", result.output_metrics).c_str());
+  if (settings.mode == SmoothingMode::kHighAccuracy) {
+    const HighAccuracyReport& ha = result.high_accuracy;
+    std::printf("  high_accuracy: %d iterations, %.3f s, cost %.4g -> %.4g\n", ha.iterations,
+                ha.solve_time_s, ha.initial_cost, ha.final_cost);
+  }
+  if (result.feed.moves_slowed > 0) {
+    std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",
+                result.feed.moves_slowed, result.feed.min_feed_mm_per_min);
+  }
+}
+
 }  // namespace
 
 int RunSmooth(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
   if (s.ok()) s = Require(FLAGS_out, "out");
   if (s.ok()) s = CheckGcodeFlags();
+  if (s.ok()) s = CheckPictureFlags();
   if (s.ok() && FLAGS_mode != "spline" && FLAGS_mode != "high_accuracy") {
     s = Status::Error("--mode=" + FLAGS_mode + " must be spline or high_accuracy");
   }
@@ -41,13 +90,22 @@ int RunSmooth(const Invocation& invocation) {
   }
   if (!s.ok()) return Fail(kExitUsage, s.message());
 
+  std::vector<std::string> outputs = {FLAGS_out, FLAGS_report};
+  for (const std::string& picture : PictureFiles()) outputs.push_back(picture);
+  s = CheckOutputFolders(outputs);
   Job job;
-  s = LoadJob(FLAGS_quiet, &job);
+  if (s.ok()) s = LoadJob(FLAGS_quiet, &job);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   SmoothingResult result;
   SmoothingFailure failure;
-  s = RunSmoothing({&job.path, job.surface_or_null(), &job.cutter, &job.machine}, settings,
-                   &result, &failure);
+  {
+    // Gone before the summary is printed, so its line never splits it.
+    ProgressDisplay progress(stderr, "tpopt smooth", !FLAGS_quiet, FLAGS_progress_after_s);
+    ReportProgressTo(&progress, &settings);
+    s = RunSmoothing({&job.path, job.surface_or_null(), &job.cutter, &job.machine}, settings,
+                     &result, &failure);
+  }
+  ReportProgressTo(nullptr, &settings);
   if (!s.ok()) {
     if (failure == SmoothingFailure::kSolver) {
       return Fail(kExitSolverFailure, s.message() + "; nothing written");
@@ -55,25 +113,9 @@ int RunSmooth(const Invocation& invocation) {
     return Fail(kExitBadInput, FLAGS_in + ": " + s.message());
   }
   result.output.title = "tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in;
-  s = SaveToolPath(FLAGS_out, job.machine, result.output);
+  s = WriteOutputs(invocation, job, result);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
-  if (!FLAGS_report.empty()) {
-    s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));
-    if (!s.ok()) return Fail(kExitBadInput, s.message());
-  }
-  if (!FLAGS_quiet) {
-    std::printf("%s%s", Summary("input ", result.input_metrics).c_str(),
-                Summary("output", result.output_metrics).c_str());
-    if (settings.mode == SmoothingMode::kHighAccuracy) {
-      const HighAccuracyReport& ha = result.high_accuracy;
-      std::printf("  high_accuracy: %d iterations, %.3f s, cost %.4g -> %.4g\n", ha.iterations,
-                  ha.solve_time_s, ha.initial_cost, ha.final_cost);
-    }
-    if (result.feed.moves_slowed > 0) {
-      std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",
-                  result.feed.moves_slowed, result.feed.min_feed_mm_per_min);
-    }
-  }
+  if (!FLAGS_quiet) PrintSummary(settings, result);
   return kExitSuccess;
 }
 

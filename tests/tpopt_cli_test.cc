@@ -152,7 +152,7 @@ TEST(TpoptCliTest, SmoothWritesPathAndSideBySideReport) {
     if (preset == "impeller_high_accuracy") {
       EXPECT_LT(j["output"]["max_overcut_mm"].get<double>(), 0.02);
       EXPECT_GT(j["iterations"].get<int>(), 0);
-      EXPECT_NE(r.output.find("high_accuracy iter"), std::string::npos);  // progress
+      EXPECT_GT(j["ceres"]["final_cost"].get<double>(), 0.0);
     }
     EXPECT_TRUE(FileExists(out));
   }
