@@ -8,16 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/test_util.h"
+
 namespace tpopt {
 namespace {
-
-int Count(const std::string& text, const std::string& needle) {
-  int n = 0;
-  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) {
-    ++n;
-  }
-  return n;
-}
 
 // The d attributes of every <path class="series">, in order.
 std::vector<std::string> SeriesPaths(const std::string& svg) {
@@ -61,8 +55,8 @@ TEST(SvgPlotTest, OneSeriesIsOnePathThroughEveryPointCornerToCorner) {
   const LinePlot plot = Ramp(n);
   const std::vector<std::string> d = SeriesPaths(RenderLinePlot(plot));
   ASSERT_EQ(d.size(), 1u);
-  EXPECT_EQ(Count(d[0], "M"), 1);
-  EXPECT_EQ(Count(d[0], "L"), n - 1);
+  EXPECT_EQ(testing::CountOccurrences(d[0], "M"), 1);
+  EXPECT_EQ(testing::CountOccurrences(d[0], "L"), n - 1);
   // The data's corners land on the plotting area's corners: x from the left
   // margin to the width less the legend, y from the bottom margin up to the
   // top margin (the layout constants of svg_plot.cc: 64, 150, 40, 26).
@@ -79,8 +73,8 @@ TEST(SvgPlotTest, NonFiniteValuesBreakTheLine) {
   const std::vector<std::string> d = SeriesPaths(RenderLinePlot(plot));
   ASSERT_EQ(d.size(), 1u);
   // Three runs: 0-2, 4-5, 7-8 -> three M and 2 + 1 + 1 L.
-  EXPECT_EQ(Count(d[0], "M"), 3);
-  EXPECT_EQ(Count(d[0], "L"), 4);
+  EXPECT_EQ(testing::CountOccurrences(d[0], "M"), 3);
+  EXPECT_EQ(testing::CountOccurrences(d[0], "L"), 4);
   EXPECT_EQ(d[0].find("nan"), std::string::npos);
   EXPECT_EQ(d[0].find("inf"), std::string::npos);
 }
@@ -89,17 +83,17 @@ TEST(SvgPlotTest, RulesNearTheDataAreDrawnFarOnesNamedOffScale) {
   LinePlot plot = Ramp(5);  // y in [0, 8]
   plot.rules = {{"limit", 10.0}, {"limit", -10.0}};
   std::string svg = RenderLinePlot(plot);
-  EXPECT_EQ(Count(svg, "class=\"rule\""), 2);
+  EXPECT_EQ(testing::CountOccurrences(svg, "class=\"rule\""), 2);
   EXPECT_EQ(svg.find("off scale"), std::string::npos);
 
   plot.rules = {{"travel", 36000.0}, {"travel", -36000.0}};
   svg = RenderLinePlot(plot);
-  EXPECT_EQ(Count(svg, "class=\"rule\""), 0);
+  EXPECT_EQ(testing::CountOccurrences(svg, "class=\"rule\""), 0);
   EXPECT_NE(svg.find("travel off scale"), std::string::npos);
 
   plot.rules = {{"none", std::numeric_limits<double>::infinity()}};
   svg = RenderLinePlot(plot);
-  EXPECT_EQ(Count(svg, "class=\"rule\""), 0);
+  EXPECT_EQ(testing::CountOccurrences(svg, "class=\"rule\""), 0);
   EXPECT_EQ(svg.find("off scale"), std::string::npos);
 }
 
@@ -128,9 +122,9 @@ TEST(SvgPlotTest, HeatmapHasOneCellPerValueWithItsColour) {
   const size_t cells = svg.find("<g class=\"cells\""), cells_end = svg.find("</g>");
   ASSERT_NE(cells, std::string::npos);
   const std::string grid = svg.substr(cells, cells_end - cells);
-  EXPECT_EQ(Count(grid, "<rect"), 6);
-  EXPECT_EQ(Count(grid, "fill=\"" + DivergingColor(-2.0, 2.0) + "\""), 1);
-  EXPECT_EQ(Count(grid, "fill=\"#ffffff\""), 2);
+  EXPECT_EQ(testing::CountOccurrences(grid, "<rect"), 6);
+  EXPECT_EQ(testing::CountOccurrences(grid, "fill=\"" + DivergingColor(-2.0, 2.0) + "\""), 1);
+  EXPECT_EQ(testing::CountOccurrences(grid, "fill=\"#ffffff\""), 2);
   EXPECT_NE(svg.find("overcut"), std::string::npos);
   EXPECT_NE(svg.find("undercut"), std::string::npos);
 }

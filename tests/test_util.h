@@ -79,6 +79,15 @@ class TempDir {
 
 inline bool FileExists(const std::string& path) { return access(path.c_str(), F_OK) == 0; }
 
+// How often `needle` occurs in `text`, overlaps included.
+inline int CountOccurrences(const std::string& text, const std::string& needle) {
+  int n = 0;
+  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) {
+    ++n;
+  }
+  return n;
+}
+
 }  // namespace tpopt::testing
 
 #endif  // TPOPT_TESTS_TEST_UTIL_H_
