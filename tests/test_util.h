@@ -7,7 +7,9 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -78,6 +80,14 @@ class TempDir {
 };
 
 inline bool FileExists(const std::string& path) { return access(path.c_str(), F_OK) == 0; }
+
+// The whole content of a file ("" if it cannot be read).
+inline std::string ReadFileText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 // How often `needle` occurs in `text`, overlaps included.
 inline int CountOccurrences(const std::string& text, const std::string& needle) {

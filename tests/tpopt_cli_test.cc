@@ -203,7 +203,7 @@ namespace tpopt {
 namespace {
 
 using testing::ParsedPolyData;
-using testing::ReadWholeFile;
+using testing::ReadFileText;
 
 // A distorted CAM path on the blade, `poses` long, in `dir`.
 std::string CamPath(const TempDir& dir, int poses) {
@@ -242,13 +242,13 @@ TEST(TpoptCliPicturesTest, EvaluateWritesAnHtmlReportAndAVtpScene) {
                                   kSim + " --samples_u=40 --samples_v=6 --report=" + report +
                                   " --html=" + html + " --vtk=" + vtp));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const std::string page = ReadWholeFile(html);
+  const std::string page = ReadFileText(html);
   EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"line-plot\""), 6);
   EXPECT_EQ(testing::CountOccurrences(page, "<path class=\"series\""), 6);  // one path per plot
   EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"heatmap\""), 1);
   EXPECT_NE(page.find(testing::TpoptBinary() + " evaluate --in=" + cam), std::string::npos);
   std::string error;
-  const ParsedPolyData scene = testing::ParseVtp(ReadWholeFile(vtp), &error);
+  const ParsedPolyData scene = testing::ParseVtp(ReadFileText(vtp), &error);
   ASSERT_EQ(error, "");
   ExpectSceneMatches(scene, 60, 40, 6, ReadJson(report));
 }
@@ -262,12 +262,12 @@ TEST(TpoptCliPicturesTest, SmoothDrawsBeforeAndAfterAndExportsTheOutputAsLegacyV
                                   " --mode=spline --samples_u=30 --samples_v=5 --report=" +
                                   report + " --html=" + html + " --vtk=" + vtk));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const std::string page = ReadWholeFile(html);
+  const std::string page = ReadFileText(html);
   EXPECT_EQ(testing::CountOccurrences(page, "<path class=\"series\""), 12);  // before and after on each plot
   EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"heatmap\""), 2);
   EXPECT_NE(page.find("<th>before</th><th>after</th>"), std::string::npos);
   std::string error;
-  const ParsedPolyData scene = testing::ParseLegacyVtk(ReadWholeFile(vtk), &error);
+  const ParsedPolyData scene = testing::ParseLegacyVtk(ReadFileText(vtk), &error);
   ASSERT_EQ(error, "");
   const nlohmann::json j = ReadJson(report);
   ExpectSceneMatches(scene, j["poses_out"].get<int>(), 30, 5, j["output"]);

@@ -5,7 +5,6 @@
 #ifndef TPOPT_TESTS_VTK_TEST_READER_H_
 #define TPOPT_TESTS_VTK_TEST_READER_H_
 
-#include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -20,13 +19,6 @@ struct ParsedPolyData {
   std::map<std::string, std::vector<double>> point_scalars;
   size_t point_count() const { return points.size() / 3; }
 };
-
-inline std::string ReadWholeFile(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 template <typename T>
 std::vector<T> Numbers(const std::string& text) {

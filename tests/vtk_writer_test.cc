@@ -86,8 +86,8 @@ TEST(VtkWriterTest, WritesWholeFilesAndNothingOnFailure) {
   const PolyData data = Sample();
   ASSERT_TRUE(WritePolyData(dir.File("s.vtp"), data).ok());
   ASSERT_TRUE(WritePolyData(dir.File("s.vtk"), data).ok());
-  EXPECT_EQ(testing::ReadWholeFile(dir.File("s.vtp")), VtpText(data));
-  EXPECT_EQ(testing::ReadWholeFile(dir.File("s.vtk")), LegacyVtkText(data));
+  EXPECT_EQ(testing::ReadFileText(dir.File("s.vtp")), VtpText(data));
+  EXPECT_EQ(testing::ReadFileText(dir.File("s.vtk")), LegacyVtkText(data));
 
   Status s = WritePolyData(dir.File("missing/s.vtp"), data);
   EXPECT_FALSE(s.ok());
