@@ -89,14 +89,22 @@ std::string WithProbe(const TempDir& dir, const std::string& html) {
   return probed;
 }
 
-TEST(HtmlReportBrowserTest, ChromiumLoadsTheReportAndDrawsEveryPlot) {
-  if (!HaveChromium()) {
-    GTEST_SKIP() << "chromium is not installed (apt-get install chromium, as .ci/install-deps "
-                    "does): the HTML report was not loaded in a browser";
+class HtmlReportBrowserTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!HaveChromium()) {
+      GTEST_SKIP() << "chromium is not installed (apt-get install chromium, as .ci/install-deps "
+                      "does): the HTML report was not loaded in a browser";
+    }
+    html_ = WriteReport(dir_);
   }
-  TempDir dir;
-  const std::string html = WriteReport(dir);
-  const auto r = RunCommand(Chromium(dir, "--dump-dom file://" + WithProbe(dir, html)));
+
+  TempDir dir_;
+  std::string html_;
+};
+
+TEST_F(HtmlReportBrowserTest, ChromiumLoadsTheReportAndDrawsEveryPlot) {
+  const auto r = RunCommand(Chromium(dir_, "--dump-dom file://" + WithProbe(dir_, html_)));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const size_t open = r.output.find("<pre id=\"probe\">"), close = r.output.find("</pre>", open);
   ASSERT_NE(open, std::string::npos) << "the probe did not run:\n" << r.output;
@@ -113,18 +121,12 @@ TEST(HtmlReportBrowserTest, ChromiumLoadsTheReportAndDrawsEveryPlot) {
   EXPECT_GT(probe["rows"].get<int>(), 10);
 }
 
-TEST(HtmlReportBrowserTest, ChromiumScreenshotsTheReport) {
-  if (!HaveChromium()) {
-    GTEST_SKIP() << "chromium is not installed (apt-get install chromium, as .ci/install-deps "
-                    "does): no screenshot of the HTML report";
-  }
-  TempDir dir;
-  const std::string html = WriteReport(dir);
+TEST_F(HtmlReportBrowserTest, ChromiumScreenshotsTheReport) {
   // Kept in the build folder for a person to look at.
   const std::string png = std::string(TPOPT_BUILD_DIR) + "/report.png";
   std::remove(png.c_str());
   const auto r = RunCommand(
-      Chromium(dir, "--window-size=1300,2600 --screenshot=" + png + " file://" + html));
+      Chromium(dir_, "--window-size=1300,2000 --screenshot=" + png + " file://" + html_));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string image = testing::ReadFileText(png);
   ASSERT_GT(image.size(), 20000u) << "a blank page compresses to a few kB";
