@@ -57,8 +57,10 @@ int RunEvaluate(const Invocation& invocation) {
   report["iterations"] = 0;
   s = WriteReport(FLAGS_report, report);
   if (s.ok()) {
+    // The file name alone labels the plots: a folder path would not fit the legend.
+    const std::string name = FLAGS_in.substr(FLAGS_in.find_last_of('/') + 1);
     s = WritePictures("tpopt evaluate of " + FLAGS_in, invocation.command_line,
-                      {{FLAGS_in, &job.path, &metrics}}, job);
+                      {{name, &job.path, &metrics}}, job);
   }
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
