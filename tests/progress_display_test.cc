@@ -47,10 +47,21 @@ TEST(ProgressDisplayTest, ShowsStagesAndDetailsOncePastTheDelay) {
   EXPECT_LT(text.find("evaluating the input"), solve);
 }
 
+TEST(ProgressDisplayTest, EveryStagePastTheDelayIsLoggedHoweverShort) {
+  const std::string text = Capture(true, 0.0, [](ProgressDisplay* p) {
+    p->SetStage("first");
+    p->SetStage("second");
+    p->SetDetail("last word");
+  });
+  EXPECT_NE(text.find("] first\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("] second\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("] second: last word\n"), std::string::npos) << text;
+}
+
 TEST(ProgressDisplayTest, ALogGetsALineOnlyWhenTheTextChanges) {
   const std::string text = Capture(true, 0.0, [](ProgressDisplay* p) {
     p->SetStage("waiting");
-    Wait(1.2);  // a dozen ticks, one piece of news
+    Wait(0.8);  // several ticks, one piece of news
   });
   size_t lines = 0;
   for (char c : text) lines += c == '\n';

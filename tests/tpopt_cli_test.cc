@@ -303,7 +303,8 @@ TEST(TpoptCliPicturesTest, ProgressShowsPastTheDelayAndQuietSilencesIt) {
   auto r = RunCommand(Tpopt(common + " --progress_after_s=0 -v=1"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("tpopt smooth ["), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("] high_accuracy solve: iteration "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("] evaluating the input\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("] high_accuracy solve"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("high_accuracy iter "), std::string::npos) << r.output;  // glog -v=1
   r = RunCommand(Tpopt(common + " --progress_after_s=0 --quiet"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
