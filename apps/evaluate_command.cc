@@ -4,12 +4,12 @@
 #include "apps/commands.h"
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
-#include "apps/version.h"
 #include "apps/job_io.h"
 #include "apps/options_from_flags.h"
 #include "apps/picture_outputs.h"
 #include "apps/progress_display.h"
 #include "apps/report.h"
+#include "apps/version.h"
 #include "model/json_io.h"
 
 namespace tpopt {
@@ -26,9 +26,7 @@ int RunEvaluate(const Invocation& invocation) {
     std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
     return kExitUsage;
   }
-  std::vector<std::string> outputs = {FLAGS_report};
-  for (const std::string& picture : PictureFiles()) outputs.push_back(picture);
-  s = CheckOutputFolders(outputs);
+  s = CheckOutputFolders({FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
   PathMetrics metrics;
   if (s.ok()) s = LoadJob(FLAGS_quiet, &job);

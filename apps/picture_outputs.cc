@@ -16,8 +16,6 @@ Status CheckPictureFlags() {
   return Status::Ok();
 }
 
-std::vector<std::string> PictureFiles() { return {FLAGS_html, FLAGS_vtk}; }
-
 Status WritePictures(const std::string& title, const std::string& command_line,
                      const std::vector<ReportedPath>& paths, const Job& job) {
   if (!FLAGS_html.empty()) {

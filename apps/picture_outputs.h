@@ -15,9 +15,6 @@ namespace tpopt {
 // Fails (usage) when --vtk is set without a .vtp or .vtk extension.
 Status CheckPictureFlags();
 
-// The files --html and --vtk name, for CheckOutputFolders.
-std::vector<std::string> PictureFiles();
-
 // Writes the HTML report of `paths` (one, or before and after) when --html
 // is set, and the VTK scene of the last path (the output of a smooth) when
 // --vtk is set; each whole or not at all. Errors name the file.

@@ -90,9 +90,7 @@ int RunSmooth(const Invocation& invocation) {
   }
   if (!s.ok()) return Fail(kExitUsage, s.message());
 
-  std::vector<std::string> outputs = {FLAGS_out, FLAGS_report};
-  for (const std::string& picture : PictureFiles()) outputs.push_back(picture);
-  s = CheckOutputFolders(outputs);
+  s = CheckOutputFolders({FLAGS_out, FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
   if (s.ok()) s = LoadJob(FLAGS_quiet, &job);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
