@@ -132,7 +132,8 @@ std::string SeriesPathData(const PlotSeries& s, const Scale& sx, const Scale& sy
 std::string LegendEntry(double x, double y, const std::string& color, const std::string& label,
                         bool dashed) {
   return "<path stroke=\"" + color + "\" stroke-width=\"2\"" +
-         (dashed ? " stroke-dasharray=\"5,3\"" : "") + " d=\"M" + Num(x) + "," + Num(y) + "h18\"/>\n" +
+         (dashed ? " stroke-dasharray=\"5,3\"" : "") + " d=\"M" + Num(x) + "," + Num(y) +
+         "h18\"/>\n" +
          Text(x + 22, y + 4, "start", label);
 }
 

@@ -263,7 +263,8 @@ TEST(TpoptCliPicturesTest, SmoothDrawsBeforeAndAfterAndExportsTheOutputAsLegacyV
                                   report + " --html=" + html + " --vtk=" + vtk));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string page = ReadFileText(html);
-  EXPECT_EQ(testing::CountOccurrences(page, "<path class=\"series\""), 12);  // before and after on each plot
+  // Before and after on each of the six plots.
+  EXPECT_EQ(testing::CountOccurrences(page, "<path class=\"series\""), 12);
   EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"heatmap\""), 2);
   EXPECT_NE(page.find("<th>before</th><th>after</th>"), std::string::npos);
   std::string error;
