@@ -51,7 +51,10 @@ size_t IndexCount(const std::vector<std::vector<int>>& cells) {
 }
 
 // <Lines> or <Polys>: all indices, then the running end of each cell.
+// Absent when there are none: an empty ASCII array is one more thing for a
+// reader to get right, and the Piece's count already says zero.
 std::string XmlCells(const char* tag, const std::vector<std::vector<int>>& cells) {
+  if (cells.empty()) return "";
   std::string connectivity, offsets;
   int end = 0;
   for (const std::vector<int>& cell : cells) {

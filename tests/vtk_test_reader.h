@@ -101,9 +101,10 @@ inline ParsedPolyData ParseVtp(const std::string& xml, std::string* error) {
   data.points = Numbers<double>(DataArrayText(xml, "", "<Points>"));
   for (const char* tag : {"<Lines>", "<Polys>"}) {
     const size_t section = xml.find(tag);
+    if (section == std::string::npos) continue;  // no cells of this kind
     const size_t section_end = xml.find(std::string("</") + (tag + 1), section);
-    if (section == std::string::npos || section_end == std::string::npos) {
-      *error = std::string("no ") + tag;
+    if (section_end == std::string::npos) {
+      *error = std::string(tag) + " not closed";
       return data;
     }
     const std::string cells = xml.substr(section, section_end - section);

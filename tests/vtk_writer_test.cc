@@ -44,12 +44,17 @@ void ExpectSameAs(const PolyData& data, const ParsedPolyData& parsed) {
 }
 
 TEST(VtkWriterTest, BothFormatsReadBackTheSame) {
-  const PolyData data = Sample();
-  std::string error;
-  ExpectSameAs(data, testing::ParseVtp(VtpText(data), &error));
-  EXPECT_EQ(error, "") << "vtp";
-  ExpectSameAs(data, testing::ParseLegacyVtk(LegacyVtkText(data), &error));
-  EXPECT_EQ(error, "") << "legacy vtk";
+  PolyData lines_only = Sample();  // a scene without a surface
+  lines_only.polys.clear();
+  for (const PolyData& data : {Sample(), lines_only}) {
+    std::string error;
+    ExpectSameAs(data, testing::ParseVtp(VtpText(data), &error));
+    EXPECT_EQ(error, "") << "vtp";
+    ExpectSameAs(data, testing::ParseLegacyVtk(LegacyVtkText(data), &error));
+    EXPECT_EQ(error, "") << "legacy vtk";
+  }
+  EXPECT_EQ(VtpText(lines_only).find("<Polys>"), std::string::npos);
+  EXPECT_NE(VtpText(lines_only).find("NumberOfPolys=\"0\""), std::string::npos);
 }
 
 TEST(VtkWriterTest, TheReaderCatchesBrokenFiles) {
