@@ -6,7 +6,10 @@
 #include "apps/flags.h"
 #include "apps/job_io.h"
 #include "apps/options_from_flags.h"
+#include "apps/picture_outputs.h"
+#include "apps/progress_display.h"
 #include "apps/report.h"
+#include "apps/version.h"
 #include "model/json_io.h"
 
 namespace tpopt {
@@ -15,6 +18,7 @@ int RunEvaluate(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
   if (s.ok()) s = Require(FLAGS_report, "report");
   if (s.ok()) s = CheckGcodeFlags();
+  if (s.ok()) s = CheckPictureFlags();
   DeviationOptions deviation_options;
   MotionOptions motion_options;
   if (s.ok()) s = MetricOptionsFromFlags(&deviation_options, &motion_options);
@@ -22,10 +26,13 @@ int RunEvaluate(const Invocation& invocation) {
     std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
     return kExitUsage;
   }
+  s = CheckOutputFolders({FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
   PathMetrics metrics;
-  s = LoadJob(FLAGS_quiet, &job);
+  if (s.ok()) s = LoadJob(FLAGS_quiet, &job);
   if (s.ok()) {
+    ProgressDisplay progress(stderr, "tpopt evaluate", !FLAGS_quiet, FLAGS_progress_after_s);
+    progress.SetStage("evaluating deviation and motion");
     s = EvaluatePath(job.path, job.machine, job.surface_or_null(), job.cutter, deviation_options,
                      motion_options, &metrics);
     if (!s.ok()) s = Status::Error(FLAGS_in + ": " + s.message());
@@ -35,7 +42,7 @@ int RunEvaluate(const Invocation& invocation) {
     return kExitBadInput;
   }
   nlohmann::json report = MetricsJson(metrics);
-  report["tpopt_version"] = "0.1.0";
+  report["tpopt_version"] = kTpoptVersion;
   report["command"] = invocation.command_line;
   report["input_file"] = FLAGS_in;
   report["surface"] = FLAGS_surface;
@@ -47,6 +54,12 @@ int RunEvaluate(const Invocation& invocation) {
   report["solve_time_s"] = 0.0;
   report["iterations"] = 0;
   s = WriteReport(FLAGS_report, report);
+  if (s.ok()) {
+    // The file name alone labels the plots: a folder path would not fit the legend.
+    const std::string name = FLAGS_in.substr(FLAGS_in.find_last_of('/') + 1);
+    s = WritePictures("tpopt evaluate of " + FLAGS_in, invocation.command_line,
+                      {{name, &job.path, &metrics}}, job);
+  }
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
     return kExitBadInput;

@@ -17,7 +17,16 @@ DEFINE_string(gcode_preamble, "(switch the controller to tool-centre-point mode 
               "G-code output: line(s) before the first move, e.g. M428 or TRAORI.");
 DEFINE_string(gcode_postamble, "", "G-code output: line(s) after the last move.");
 DEFINE_string(report, "", "Report JSON to write (metrics of the input and output).");
-DEFINE_bool(quiet, false, "No progress or summary on stderr.");
+DEFINE_bool(quiet, false, "No progress display, summary or reader warnings.");
+DEFINE_double(progress_after_s, 1.0,
+              "Seconds before the progress display appears on stderr (shorter runs show "
+              "none); --quiet turns it off.");
+DEFINE_string(html, "",
+              "evaluate/smooth: write a self-contained HTML report (inline SVG plots of A and C "
+              "against path length, the deviation map, the summary) to this file.");
+DEFINE_string(vtk, "",
+              "evaluate/smooth: write the surface with its deviation, the tool axes and the tip "
+              "path for ParaView: .vtp (VTK XML PolyData) or .vtk (legacy), ASCII.");
 
 DEFINE_double(cutter_radius, 0.0,
               "Cutter radius, mm. generate: required. evaluate/smooth: overrides the "

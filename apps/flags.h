@@ -11,6 +11,11 @@ DECLARE_string(in);
 DECLARE_string(out);
 DECLARE_string(report);
 DECLARE_bool(quiet);
+DECLARE_double(progress_after_s);
+
+// Pictures (evaluate and smooth).
+DECLARE_string(html);
+DECLARE_string(vtk);
 
 // G-code (.ngc / .nc files)
 DECLARE_string(gcode_style);

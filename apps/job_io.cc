@@ -1,5 +1,7 @@
 #include "apps/job_io.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <vector>
@@ -122,6 +124,19 @@ Status CheckGcodeFlags() {
         {"gcode_in_style", FLAGS_gcode_in_style}}) {
     if (value != "tcp" && value != "joint") {
       return Status::Error(std::string("--") + name + "=" + value + " must be tcp or joint");
+    }
+  }
+  return Status::Ok();
+}
+
+Status CheckOutputFolders(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) {
+    if (path.empty()) continue;
+    const size_t slash = path.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash + 1);
+    struct stat info;
+    if (stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) {
+      return Status::Error(path + ": cannot write: folder '" + folder + "' does not exist");
     }
   }
   return Status::Ok();

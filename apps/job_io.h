@@ -55,6 +55,11 @@ Status LoadJob(bool quiet, Job* job);
 // Fails (usage) when --gcode_style or --gcode_in_style is not tcp or joint.
 Status CheckGcodeFlags();
 
+// Fails (bad input, naming the file) when a non-empty path among `paths`
+// lies in a folder that does not exist: checked before a run so that a
+// mistyped output costs no solve.
+Status CheckOutputFolders(const std::vector<std::string>& paths);
+
 // Fails (usage) when a required flag is empty.
 Status Require(const std::string& value, const std::string& flag);
 

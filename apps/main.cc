@@ -11,6 +11,7 @@
 #include "apps/exit_codes.h"
 #include "apps/flag_parser.h"
 #include "apps/flags.h"
+#include "apps/version.h"
 
 namespace {
 
@@ -36,7 +37,7 @@ constexpr char kUsage[] =
 
 int main(int argc, char** argv) {
   gflags::SetUsageMessage(kUsage);
-  gflags::SetVersionString("0.1.0");
+  gflags::SetVersionString(tpopt::kTpoptVersion);
   FLAGS_logtostderr = true;
   google::InitGoogleLogging(argv[0]);
   if (argc < 2) {

@@ -38,7 +38,6 @@ Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptio
   ha->num_threads = FLAGS_num_threads;
   ha->default_feed_mm_per_min = FLAGS_feed;
   ha->angle_tolerance_deg = FLAGS_angle_tolerance_deg;
-  ha->progress = !FLAGS_quiet;
   std::string why;
   if (!spline->IsValid(&why)) return Status::Error(why);
   if (!ha->IsValid(&why)) return Status::Error(why);

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "apps/commands.h"
+#include "apps/version.h"
 #include "model/atomic_file.h"
 #include "solver/smoothing_pipeline.h"
 
@@ -80,7 +81,7 @@ std::string Summary(const std::string& label, const PathMetrics& m) {
 nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string& mode,
                                 const SmoothingResult& result) {
   nlohmann::json report = MetricsJson(result.output_metrics);
-  report["tpopt_version"] = "0.1.0";
+  report["tpopt_version"] = kTpoptVersion;
   report["command"] = invocation.command_line;
   report["mode"] = mode;
   report["input"] = MetricsJson(result.input_metrics);

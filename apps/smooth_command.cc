@@ -7,6 +7,8 @@
 #include "apps/flags.h"
 #include "apps/job_io.h"
 #include "apps/options_from_flags.h"
+#include "apps/picture_outputs.h"
+#include "apps/progress_display.h"
 #include "apps/report.h"
 #include "model/apt_io.h"
 #include "solver/smoothing_pipeline.h"
@@ -19,12 +21,62 @@ int Fail(int code, const std::string& message) {
   return code;
 }
 
+// Shows the pipeline's stages and Ceres' iterations on `progress`; null
+// detaches them.
+void ReportProgressTo(ProgressDisplay* progress, SmoothingSettings* settings) {
+  if (progress == nullptr) {
+    settings->on_stage = nullptr;
+    settings->high_accuracy.on_iteration = nullptr;
+    return;
+  }
+  settings->on_stage = [progress](const std::string& stage) { progress->SetStage(stage); };
+  settings->high_accuracy.on_iteration = [progress](int iteration, double cost) {
+    char detail[64];
+    std::snprintf(detail, sizeof(detail), "iteration %d, cost %.4e", iteration, cost);
+    progress->SetDetail(detail);
+  };
+}
+
+// The output path, then the report, HTML and VTK files the flags ask for.
+// Writes the path as `written` (the result, or points on its fitted
+// B-spline `spans`), the report and the pictures of the result.
+Status WriteOutputs(const Invocation& invocation, const Job& job, const SmoothingResult& result,
+                    const ToolPath& written, const std::vector<AptCurveSpan>& spans) {
+  Status s = SaveToolPath(FLAGS_out, job.machine, written, spans);
+  if (s.ok() && !FLAGS_report.empty()) {
+    s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));
+  }
+  if (s.ok()) {
+    s = WritePictures("tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in,
+                      invocation.command_line,
+                      {{"before", &job.path, &result.input_metrics},
+                       {"after", &result.output, &result.output_metrics}},
+                      job);
+  }
+  return s;
+}
+
+void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& result) {
+  std::printf("%s%s", Summary("input ", result.input_metrics).c_str(),
+              Summary("output", result.output_metrics).c_str());
+  if (settings.mode == SmoothingMode::kHighAccuracy) {
+    const HighAccuracyReport& ha = result.high_accuracy;
+    std::printf("  high_accuracy: %d iterations, %.3f s, cost %.4g -> %.4g\n", ha.iterations,
+                ha.solve_time_s, ha.initial_cost, ha.final_cost);
+  }
+  if (result.feed.moves_slowed > 0) {
+    std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",
+                result.feed.moves_slowed, result.feed.min_feed_mm_per_min);
+  }
+}
+
 }  // namespace
 
 int RunSmooth(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
   if (s.ok()) s = Require(FLAGS_out, "out");
   if (s.ok()) s = CheckGcodeFlags();
+  if (s.ok()) s = CheckPictureFlags();
   if (s.ok() && FLAGS_mode != "spline" && FLAGS_mode != "high_accuracy") {
     s = Status::Error("--mode=" + FLAGS_mode + " must be spline or high_accuracy");
   }
@@ -44,13 +96,20 @@ int RunSmooth(const Invocation& invocation) {
   if (s.ok()) s = CurveOutputOptionsFromFlags(&bspline_output, &curve_options);
   if (!s.ok()) return Fail(kExitUsage, s.message());
 
+  s = CheckOutputFolders({FLAGS_out, FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
-  s = LoadJob(FLAGS_quiet, &job);
+  if (s.ok()) s = LoadJob(FLAGS_quiet, &job);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   SmoothingResult result;
   SmoothingFailure failure;
-  s = RunSmoothing({&job.path, job.surface_or_null(), &job.cutter, &job.machine}, settings,
-                   &result, &failure);
+  {
+    // Gone before the summary is printed, so its line never splits it.
+    ProgressDisplay progress(stderr, "tpopt smooth", !FLAGS_quiet, FLAGS_progress_after_s);
+    ReportProgressTo(&progress, &settings);
+    s = RunSmoothing({&job.path, job.surface_or_null(), &job.cutter, &job.machine}, settings,
+                     &result, &failure);
+  }
+  ReportProgressTo(nullptr, &settings);
   if (!s.ok()) {
     if (failure == SmoothingFailure::kSolver) {
       return Fail(kExitSolverFailure, s.message() + "; nothing written");
@@ -64,27 +123,13 @@ int RunSmooth(const Invocation& invocation) {
     s = FitToolPathCurves(result.output, curve_options, &written, &spans);
     if (!s.ok()) return Fail(kExitBadInput, FLAGS_out + ": the B-spline fit failed: " + s.message());
   }
-  s = SaveToolPath(FLAGS_out, job.machine, written, spans);
+  s = WriteOutputs(invocation, job, result, written, spans);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
-  if (!FLAGS_report.empty()) {
-    s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));
-    if (!s.ok()) return Fail(kExitBadInput, s.message());
-  }
   if (!FLAGS_quiet) {
-    std::printf("%s%s", Summary("input ", result.input_metrics).c_str(),
-                Summary("output", result.output_metrics).c_str());
-    if (settings.mode == SmoothingMode::kHighAccuracy) {
-      const HighAccuracyReport& ha = result.high_accuracy;
-      std::printf("  high_accuracy: %d iterations, %.3f s, cost %.4g -> %.4g\n", ha.iterations,
-                  ha.solve_time_s, ha.initial_cost, ha.final_cost);
-    }
+    PrintSummary(settings, result);
     if (bspline_output) {
       std::printf("  B-spline output: %zu cubic spans, %zu poses written (points on the spans)\n",
                   spans.size(), written.poses.size());
-    }
-    if (result.feed.moves_slowed > 0) {
-      std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",
-                  result.feed.moves_slowed, result.feed.min_feed_mm_per_min);
     }
   }
   return kExitSuccess;

@@ -92,7 +92,6 @@ std::vector<Row> RunSuite(int poses) {
         for (const SmoothingMode mode : {SmoothingMode::kSpline, SmoothingMode::kHighAccuracy}) {
           SmoothingSettings settings;
           settings.mode = mode;
-          settings.high_accuracy.progress = false;
           SmoothingResult result;
           SmoothingFailure failure;
           const auto start = std::chrono::steady_clock::now();

@@ -53,7 +53,6 @@ void BM_HighAccuracy(benchmark::State& state) {
   SmoothWithSplines(path, b.machine, &b.surface, *path.cutter, SplineSmootherOptions(), &guess,
                     &spline_report);
   HighAccuracyOptions options;
-  options.progress = false;
   for (auto _ : state) {
     ToolPath out;
     HighAccuracyReport report;

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include <ceres/version.h>
 #include <glog/logging.h>
 
 #include "model/axis_metrics.h"
@@ -24,14 +25,21 @@ namespace {
 // much arc length (mm) or time (s).
 constexpr double kMinStep = 1e-6;
 
-// Prints one line per Ceres iteration on stderr.
-class ProgressPrinter : public ceres::IterationCallback {
+// Logs each Ceres iteration at verbosity 1 and passes it to the caller's
+// observer, if any.
+class IterationObserver : public ceres::IterationCallback {
  public:
+  explicit IterationObserver(const std::function<void(int, double)>& observer)
+      : observer_(observer) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
-    std::fprintf(stderr, "  high_accuracy iter %3d  cost %.6e  change %+.3e  |step| %.3e\n",
-                 s.iteration, s.cost, -s.cost_change, s.step_norm);
+    VLOG(1) << "high_accuracy iter " << s.iteration << "  cost " << s.cost << "  change "
+            << -s.cost_change << "  |step| " << s.step_norm;
+    if (observer_) observer_(s.iteration, s.cost);
     return ceres::SOLVER_CONTINUE;
   }
+
+ private:
+  const std::function<void(int, double)>& observer_;
 };
 
 // Poses that may move: not rapid targets, on a cutting move, and not held
@@ -414,8 +422,8 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
   solver_options.function_tolerance = options.function_tolerance;
   solver_options.num_threads = options.num_threads;
   solver_options.logging_type = ceres::SILENT;
-  ProgressPrinter printer;
-  if (options.progress) solver_options.callbacks.push_back(&printer);
+  IterationObserver observer(options.on_iteration);
+  solver_options.callbacks.push_back(&observer);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);
 
@@ -445,5 +453,7 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return Status::Ok();
 }
+
+std::string CeresVersion() { return CERES_VERSION_STRING; }
 
 }  // namespace tpopt

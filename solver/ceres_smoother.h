@@ -17,6 +17,7 @@
 #define TPOPT_SOLVER_CERES_SMOOTHER_H_
 
 #include <array>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -90,8 +91,10 @@ struct HighAccuracyOptions {
   // Jacobian evaluation threads. Runs with the same count give the same
   // result (tested); a different count may differ in the last digits.
   int num_threads = 2;
-  // Print one line per iteration on stderr.
-  bool progress = true;
+  // Called after each Ceres iteration with its number and cost (for a
+  // progress display); may be empty. Each iteration is also logged at glog
+  // verbosity 1 (`-v=1`).
+  std::function<void(int iteration, double cost)> on_iteration;
 
   bool IsValid(std::string* why) const;
 };
@@ -150,6 +153,10 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
 // a Ceres failure is reported through `report->converged`.
 Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
                           ToolPath* out, HighAccuracyReport* report);
+
+// The Ceres Solver version tpopt is built with, e.g. "2.1.0" (for reports;
+// only solver/ includes Ceres).
+std::string CeresVersion();
 
 }  // namespace tpopt
 

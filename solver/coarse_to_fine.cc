@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 
 #include <glog/logging.h>
 
@@ -101,10 +100,7 @@ Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOption
   SmoothingInputs coarse = inputs;
   coarse.input = &coarse_input;
   coarse.initial_guess = &coarse_guess;
-  if (options.progress) {
-    std::fprintf(stderr, "  high_accuracy: coarse solve over %zu of %zu poses\n",
-                 stations.size(), n);
-  }
+  VLOG(1) << "high_accuracy: coarse solve over " << stations.size() << " of " << n << " poses";
   // The refinement finishes the job, so the coarse solve may stop once its
   // cost settles to 1e-6.
   HighAccuracyOptions coarse_options = options;
@@ -124,10 +120,8 @@ Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOption
   HighAccuracyOptions refine = options;
   refine.max_iterations = options.refine_iterations;
   refine.function_tolerance = std::max(options.function_tolerance, 1e-3);
-  if (options.progress) {
-    std::fprintf(stderr, "  high_accuracy: refining all %zu poses (at most %d iterations)\n", n,
-                 refine.max_iterations);
-  }
+  VLOG(1) << "high_accuracy: refining all " << n << " poses (at most " << refine.max_iterations
+          << " iterations)";
   s = SolveInWindows(fine, refine, out, report);
   if (!s.ok()) return s;
   report->iterations += coarse_report.iterations;

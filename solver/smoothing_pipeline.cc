@@ -28,17 +28,22 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                     " poses)",
                 failure);
   }
-  auto evaluate = [&](const ToolPath& path, PathMetrics* metrics) {
+  auto stage = [&](const std::string& name) {
+    if (settings.on_stage) settings.on_stage(name);
+  };
+  auto evaluate = [&](const std::string& what, const ToolPath& path, PathMetrics* metrics) {
+    stage("evaluating " + what);
     return EvaluatePath(path, *job.machine, job.surface, *job.cutter, settings.deviation,
                         settings.motion, metrics);
   };
-  Status s = evaluate(*job.input, &result->input_metrics);
+  Status s = evaluate("the input", *job.input, &result->input_metrics);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
 
   SplineSmootherOptions spline_options = settings.spline;
   // The Ceres problem keeps the input's poses one for one.
   if (high_accuracy) spline_options.insert_transitions = false;
   ToolPath spline_path;
+  stage("spline smoothing");
   s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
                         &spline_path, &result->spline);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
@@ -48,8 +53,9 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     // Without a surface the band around the program is the only measure of
     // accuracy, and the input is the one start known to lie inside it.
     const ToolPath& guess = job.surface != nullptr ? spline_path : *job.input;
-    s = evaluate(guess, &result->initial_guess_metrics);
+    s = evaluate("the initial guess", guess, &result->initial_guess_metrics);
     const SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
+    if (s.ok()) stage("high_accuracy solve");
     if (s.ok()) s = SmoothHighAccuracy(inputs, settings.high_accuracy, &result->output,
                                        &result->high_accuracy);
     if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
@@ -59,12 +65,13 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     }
   }
   if (settings.resample_step_mm > 0) {
+    stage("resampling");
     ResampleOptions resample;
     resample.step_mm = settings.resample_step_mm;
     s = ResamplePath(result->output, *job.machine, resample, &result->output);
     if (!s.ok()) return Fail(SmoothingFailure::kBadInput, "resampling: " + s.message(), failure);
   }
-  s = evaluate(result->output, &result->output_at_input_feed);
+  s = evaluate("the output", result->output, &result->output_at_input_feed);
   if (!s.ok()) {
     return Fail(SmoothingFailure::kSolver,
                 "the smoothed path does not fit the machine (" + s.message() + ")", failure);
@@ -78,9 +85,10 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   result->output_metrics = result->output_at_input_feed;
   if (!settings.schedule_feed) return Status::Ok();
   std::vector<JointVector> joints;
+  stage("scheduling the feed");
   s = job.machine->AssignJoints(result->output, &joints);
   if (s.ok()) s = ScheduleFeed(*job.machine, joints, settings.feed, &result->output, &result->feed);
-  if (s.ok()) s = evaluate(result->output, &result->output_metrics);
+  if (s.ok()) s = evaluate("the output as written", result->output, &result->output_metrics);
   if (!s.ok()) return Fail(SmoothingFailure::kSolver, "feed scheduling: " + s.message(), failure);
   return Status::Ok();
 }

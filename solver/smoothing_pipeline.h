@@ -7,6 +7,7 @@
 #ifndef TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
 #define TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
 
+#include <functional>
 #include <string>
 
 #include "model/path_metrics.h"
@@ -37,6 +38,9 @@ struct SmoothingSettings {
   FeedScheduleOptions feed;
   DeviationOptions deviation;
   MotionOptions motion;
+  // Called as each stage starts, e.g. "evaluating the input" (for a
+  // progress display); may be empty.
+  std::function<void(const std::string& stage)> on_stage;
 };
 
 struct SmoothingResult {

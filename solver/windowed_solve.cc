@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <numeric>
+
+#include <glog/logging.h>
 
 #include "solver/coarse_to_fine.h"
 
@@ -38,8 +39,6 @@ Status SolveInWindows(const SmoothingInputs& inputs, const HighAccuracyOptions& 
   const size_t windows = 1 + (n - width + (width - overlap) - 1) / (width - overlap);
   // The path as solved so far: the guess ahead of the current window.
   ToolPath current = inputs.initial_guess ? *inputs.initial_guess : *inputs.input;
-  HighAccuracyOptions window_options = options;
-  window_options.progress = false;
   *report = HighAccuracyReport();
   report->converged = true;
   size_t first = 0;
@@ -55,17 +54,15 @@ Status SolveInWindows(const SmoothingInputs& inputs, const HighAccuracyOptions& 
     window.held_first = first > 0 ? kHeldAtSeam : 0;
     ToolPath solved;
     HighAccuracyReport window_report;
-    Status s = SolveWholeProblem(window, window_options, &solved, &window_report);
+    Status s = SolveWholeProblem(window, options, &solved, &window_report);
     if (!s.ok()) return s;
     for (size_t i = window.held_first; i < indices.size(); ++i) {
       current.poses[first + i].p_w_tip = solved.poses[i].p_w_tip;
       current.poses[first + i].a_w = solved.poses[i].a_w;
     }
     Accumulate(window_report, report);
-    if (options.progress) {
-      std::fprintf(stderr, "  high_accuracy: window %zu/%zu, poses %zu-%zu, %d iterations\n",
-                   k + 1, windows, first, end - 1, window_report.iterations);
-    }
+    VLOG(1) << "high_accuracy: window " << k + 1 << "/" << windows << ", poses " << first << "-"
+            << end - 1 << ", " << window_report.iterations << " iterations";
     if (end == n) break;
     first = end - overlap;
   }

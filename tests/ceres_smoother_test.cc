@@ -50,7 +50,6 @@ class CeresSmootherTest : public ::testing::Test {
                                   &guess, &spline_report)
                     .ok());
     HighAccuracyOptions options;
-    options.progress = false;
     const SmoothingInputs inputs{&input, &guess, &surface_, &cutter_, &machine_};
     EXPECT_TRUE(SmoothHighAccuracy(inputs, options, &out, report).ok());
     return out;
@@ -93,7 +92,6 @@ TEST_F(CeresSmootherTest, IsDeterministic) {
 
 TEST_F(CeresSmootherTest, SurfaceFreeStaysInTheBandAndSmooths) {
   HighAccuracyOptions options;
-  options.progress = false;
   options.w_second = 1e6;
   options.w_third = 0;
   options.w_tip_second = 0;
@@ -129,7 +127,6 @@ TEST_F(CeresSmootherTest, RejectsMismatchedInputsAndBadOptions) {
   ToolPath shorter = clean_;
   shorter.poses.pop_back();
   HighAccuracyOptions options;
-  options.progress = false;
   ToolPath out;
   HighAccuracyReport report;
   const SmoothingInputs inputs{&clean_, &shorter, &surface_, &cutter_, &machine_};

@@ -104,7 +104,6 @@ TEST(CoarseToFineSolveTest, CoarseToFineAndWindowsMatchTheDirectSolve) {
   PathMetrics metrics[3];
   for (int k = 0; k < 3; ++k) {
     HighAccuracyOptions options;
-    options.progress = false;
     options.coarse_poses = variants[k].coarse_poses;
     options.window_poses = variants[k].window_poses;
     ToolPath out;

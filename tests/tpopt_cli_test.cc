@@ -1,10 +1,12 @@
 // The tpopt command end to end: flags, exit codes, messages, outputs.
+#include <algorithm>
 #include <fstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "tests/test_util.h"
+#include "tests/vtk_test_reader.h"
 
 namespace tpopt {
 namespace {
@@ -148,7 +150,7 @@ TEST(TpoptCliTest, SmoothWritesPathAndSideBySideReport) {
     if (preset == "impeller_high_accuracy") {
       EXPECT_LT(j["output"]["max_overcut_mm"].get<double>(), 0.02);
       EXPECT_GT(j["iterations"].get<int>(), 0);
-      EXPECT_NE(r.output.find("high_accuracy iter"), std::string::npos);  // progress
+      EXPECT_GT(j["ceres"]["final_cost"].get<double>(), 0.0);
     }
     EXPECT_TRUE(FileExists(out));
   }
@@ -269,6 +271,127 @@ TEST(TpoptCliTest, PencilBadInputAndUsageWriteNothing) {
                        " --output_curve=nurbs --out=" + out));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_FALSE(FileExists(out));
+}
+
+}  // namespace
+}  // namespace tpopt
+
+// Pictures: --html, --vtk and the progress display.
+namespace tpopt {
+namespace {
+
+using testing::ParsedPolyData;
+using testing::ReadFileText;
+
+// A distorted CAM path on the blade, `poses` long, in `dir`.
+std::string CamPath(const TempDir& dir, int poses) {
+  const std::string cam = dir.File("cam.cls");
+  const auto r = RunCommand(Tpopt("generate --surface=" + kBlade + " --cutter_radius=4 --poses=" +
+                                  std::to_string(poses) +
+                                  " --uv_distortion=0.03 --axis_noise_deg=0.3 --out=" + cam));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  return cam;
+}
+
+// Checks a --vtk export of `poses` poses over a samples_u x samples_v grid
+// against the report's deviation extremes.
+void ExpectSceneMatches(const ParsedPolyData& scene, int poses, int samples_u, int samples_v,
+                        const nlohmann::json& metrics) {
+  const size_t grid = samples_u * samples_v;
+  ASSERT_EQ(scene.point_count(), grid + 2 * poses);
+  EXPECT_EQ(scene.polys.size(), static_cast<size_t>((samples_u - 1) * (samples_v - 1)));
+  ASSERT_EQ(scene.lines.size(), static_cast<size_t>(poses + 1));  // axes, then the tip path
+  EXPECT_EQ(scene.lines.back().size(), static_cast<size_t>(poses));
+  const std::vector<double>& deviation = scene.point_scalars.at("deviation_mm");
+  ASSERT_EQ(deviation.size(), scene.point_count());
+  const auto [lo, hi] = std::minmax_element(deviation.begin(), deviation.begin() + grid);
+  EXPECT_NEAR(-*lo, metrics["max_overcut_mm"].get<double>(), 1e-6);
+  EXPECT_NEAR(*hi, metrics["max_undercut_mm"].get<double>(), 1e-6);
+  const std::vector<double>& part = scene.point_scalars.at("part");
+  EXPECT_EQ(std::count(part.begin(), part.end(), 0.0), static_cast<long>(grid));
+  EXPECT_EQ(std::count(part.begin(), part.end(), 1.0), poses);
+}
+
+TEST(TpoptCliPicturesTest, EvaluateWritesAnHtmlReportAndAVtpScene) {
+  TempDir dir;
+  const std::string cam = CamPath(dir, 60);
+  const std::string html = dir.File("r.html"), vtp = dir.File("s.vtp"), report = dir.File("r.json");
+  const auto r = RunCommand(Tpopt("evaluate --in=" + cam + " --surface=" + kBlade + " --machine=" +
+                                  kSim + " --samples_u=40 --samples_v=6 --report=" + report +
+                                  " --html=" + html + " --vtk=" + vtp));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string page = ReadFileText(html);
+  EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"line-plot\""), 6);
+  EXPECT_EQ(testing::CountOccurrences(page, "<path class=\"series\""), 6);  // one path per plot
+  EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"heatmap\""), 1);
+  EXPECT_NE(page.find(testing::TpoptBinary() + " evaluate --in=" + cam), std::string::npos);
+  std::string error;
+  const ParsedPolyData scene = testing::ParseVtp(ReadFileText(vtp), &error);
+  ASSERT_EQ(error, "");
+  ExpectSceneMatches(scene, 60, 40, 6, ReadJson(report));
+}
+
+TEST(TpoptCliPicturesTest, SmoothDrawsBeforeAndAfterAndExportsTheOutputAsLegacyVtk) {
+  TempDir dir;
+  const std::string cam = CamPath(dir, 60);
+  const std::string html = dir.File("r.html"), vtk = dir.File("s.vtk"), report = dir.File("r.json");
+  const auto r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + dir.File("out.cls") +
+                                  " --surface=" + kBlade + " --machine=" + kSim +
+                                  " --mode=spline --samples_u=30 --samples_v=5 --report=" +
+                                  report + " --html=" + html + " --vtk=" + vtk));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string page = ReadFileText(html);
+  // Before and after on each of the six plots.
+  EXPECT_EQ(testing::CountOccurrences(page, "<path class=\"series\""), 12);
+  EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"heatmap\""), 2);
+  EXPECT_NE(page.find("<th>before</th><th>after</th>"), std::string::npos);
+  std::string error;
+  const ParsedPolyData scene = testing::ParseLegacyVtk(ReadFileText(vtk), &error);
+  ASSERT_EQ(error, "");
+  const nlohmann::json j = ReadJson(report);
+  ExpectSceneMatches(scene, j["poses_out"].get<int>(), 30, 5, j["output"]);
+}
+
+TEST(TpoptCliPicturesTest, BadPictureFilesFailBeforeTheRunAndWriteNothing) {
+  TempDir dir;
+  const std::string cam = CamPath(dir, 30), out = dir.File("out.cls");
+  const std::string common = " --in=" + cam + " --surface=" + kBlade + " --mode=spline";
+  auto r = RunCommand(Tpopt("smooth" + common + " --out=" + out + " --html=" +
+                            dir.File("no/such/r.html")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("no/such/r.html"), std::string::npos) << r.output;
+  EXPECT_FALSE(FileExists(out));
+  r = RunCommand(Tpopt("evaluate --in=" + cam + " --report=" + dir.File("r.json") + " --vtk=" +
+                       dir.File("gone/s.vtp")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.output.find("gone/s.vtp"), std::string::npos) << r.output;
+  EXPECT_FALSE(FileExists(dir.File("r.json")));
+  r = RunCommand(Tpopt("smooth" + common + " --out=" + out + " --vtk=" + dir.File("s.obj")));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--vtk=" + dir.File("s.obj")), std::string::npos) << r.output;
+  EXPECT_FALSE(FileExists(out));
+}
+
+TEST(TpoptCliPicturesTest, ProgressShowsPastTheDelayAndQuietSilencesIt) {
+  TempDir dir;
+  const std::string cam = CamPath(dir, 120);
+  const std::string common = "smooth --flagfile=" +
+                             SourcePath("data/presets/impeller_high_accuracy.flags") +
+                             " --in=" + cam + " --out=" + dir.File("out.cls") +
+                             " --surface=" + kBlade + " --machine=" + kSim;
+  auto r = RunCommand(Tpopt(common + " --progress_after_s=0 -v=1"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("tpopt smooth ["), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("] evaluating the input\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("] high_accuracy solve"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("high_accuracy iter "), std::string::npos) << r.output;  // glog -v=1
+  r = RunCommand(Tpopt(common + " --progress_after_s=0 --quiet"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output, "");
+  // A spline run is over well within the default second: no progress.
+  r = RunCommand(Tpopt(common + " --mode=spline"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(r.output.find("tpopt smooth ["), std::string::npos) << r.output;
 }
 
 }  // namespace
