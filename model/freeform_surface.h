@@ -1,8 +1,9 @@
 // A bicubic tensor-product B-spline surface (non-rational, clamped knots):
 //   S(u, v) = sum_i sum_j N_i,3(u) N_j,3(v) P_ij,  (u, v) in [0, 1]^2,
 // the file's knot ranges mapped affinely to [0, 1] as for BSplineCurve.
-// Named apart from issue 6's model/bspline_surface.h so that both can be
-// merged later.
+// The geometry is model/bspline_surface.h's; this adds what a cutter
+// placement needs on top: a name, the side the cutter is on, and the
+// ParametricSurface interface (normals and curvatures towards the tool).
 //
 // JSON (mm): {"name", "units": "mm", "kind": "bspline_surface",
 //  "cutter_side": "positive" | "negative", "degree_u": 3, "degree_v": 3,
@@ -17,7 +18,7 @@
 
 #include <Eigen/Core>
 
-#include "model/bspline_curve.h"
+#include "model/bspline_surface.h"
 #include "model/parametric_surface.h"
 #include "model/status.h"
 
@@ -27,9 +28,9 @@ class FreeformSurface : public ParametricSurface {
  public:
   FreeformSurface() = default;
 
-  // Validates and builds: degree 3 in both directions, each knot vector
-  // clamped, non-decreasing, of size (control points in that direction) + 4,
-  // a rectangular grid of at least 4 x 4 finite points. `what` names the
+  // Validates and builds (BSplineSurface::Create with degree 3 both ways):
+  // each knot vector clamped, non-decreasing, of size (control points in
+  // that direction) + 4, a rectangular grid of finite points. `what` names the
   // surface in messages (e.g. the file).
   static Status Create(std::string name, std::vector<double> knots_u, std::vector<double> knots_v,
                        const std::vector<std::vector<Eigen::Vector3d>>& control_points,
@@ -42,11 +43,7 @@ class FreeformSurface : public ParametricSurface {
 
  private:
   std::string name_;
-  std::vector<double> knots_u_;  // mapped to [0, 1]
-  // One cubic curve in v per row i of control points: evaluating them at v
-  // gives the control points (and their v-derivatives) of the u-curve
-  // through S(., v).
-  std::vector<BSplineCurve> rows_;
+  BSplineSurface surface_;
   double side_sign_ = 1.0;
 };
 

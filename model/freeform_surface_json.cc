@@ -19,22 +19,6 @@ Status Degree(const json& j, const std::string& key, const std::string& what) {
   return Status::Ok();
 }
 
-Status ControlNet(const json& j, const std::string& what,
-                  std::vector<std::vector<Eigen::Vector3d>>* net) {
-  if (!j.is_array()) return Status::Error(what + " must be an array of rows of [x, y, z]");
-  net->resize(j.size());
-  for (size_t i = 0; i < j.size(); ++i) {
-    const std::string row = what + "[" + std::to_string(i) + "]";
-    if (!j[i].is_array()) return Status::Error(row + " must be an array of [x, y, z]");
-    (*net)[i].resize(j[i].size());
-    for (size_t k = 0; k < j[i].size(); ++k) {
-      Status s = JsonPoint(j[i][k], row + "[" + std::to_string(k) + "]", &(*net)[i][k]);
-      if (!s.ok()) return s;
-    }
-  }
-  return Status::Ok();
-}
-
 Status FreeformFromJson(const std::string& path, const json& j, FreeformSurface* surface) {
   const std::string what = path + ": surface";
   std::string kind, units, side, name;
@@ -60,7 +44,7 @@ Status FreeformFromJson(const std::string& path, const json& j, FreeformSurface*
   if (s.ok()) s = Degree(j, "degree_v", path);
   if (s.ok()) s = JsonNumbers(j["knots_u"], path + ": knots_u", &knots_u);
   if (s.ok()) s = JsonNumbers(j["knots_v"], path + ": knots_v", &knots_v);
-  if (s.ok()) s = ControlNet(j["control_points"], path + ": control_points", &net);
+  if (s.ok()) s = JsonControlNet(j["control_points"], path + ": control_points", &net);
   if (!s.ok()) return s;
   return FreeformSurface::Create(name, std::move(knots_u), std::move(knots_v), net,
                                  side == "negative" ? -1.0 : 1.0, path, surface);

@@ -56,6 +56,22 @@ Status JsonPoint(const json& j, const std::string& what, Eigen::Vector3d* p, int
   return Status::Ok();
 }
 
+Status JsonControlNet(const json& j, const std::string& what,
+                      std::vector<std::vector<Eigen::Vector3d>>* net) {
+  if (!j.is_array()) return Status::Error(what + " must be an array of rows of [x, y, z]");
+  net->resize(j.size());
+  for (size_t i = 0; i < j.size(); ++i) {
+    const std::string row = what + "[" + std::to_string(i) + "]";
+    if (!j[i].is_array()) return Status::Error(row + " must be an array of [x, y, z]");
+    (*net)[i].resize(j[i].size());
+    for (size_t k = 0; k < j[i].size(); ++k) {
+      Status s = JsonPoint(j[i][k], row + "[" + std::to_string(k) + "]", &(*net)[i][k]);
+      if (!s.ok()) return s;
+    }
+  }
+  return Status::Ok();
+}
+
 Status JsonNumbers(const json& j, const std::string& what, std::vector<double>* out) {
   if (!j.is_array()) return Status::Error(what + " must be an array of numbers");
   out->resize(j.size());

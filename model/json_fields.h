@@ -24,6 +24,10 @@ Status JsonNumber(const nlohmann::json& j, const std::string& what, double* out)
 Status JsonPoint(const nlohmann::json& j, const std::string& what, Eigen::Vector3d* p,
                  int dimension = 3);
 
+// A control net: an array of rows, each an array of [x, y, z].
+Status JsonControlNet(const nlohmann::json& j, const std::string& what,
+                      std::vector<std::vector<Eigen::Vector3d>>* net);
+
 // An array of such numbers.
 Status JsonNumbers(const nlohmann::json& j, const std::string& what, std::vector<double>* out);
 

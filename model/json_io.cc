@@ -183,20 +183,12 @@ Status BSplineSurfaceFromJson(const std::string& path, const json& j, BSplineSur
   if (s.ok()) s = NumbersAt(j, "knots_u", path + ": surface", &knots_u);
   if (s.ok()) s = NumbersAt(j, "knots_v", path + ": surface", &knots_v);
   if (!s.ok()) return s;
-  if (!j.contains("control_points") || !j["control_points"].is_array()) {
+  if (!j.contains("control_points")) {
     return Status::Error(path + ": surface.control_points must be an array of rows");
   }
-  const json& rows = j["control_points"];
-  std::vector<std::vector<Eigen::Vector3d>> net(rows.size());
-  for (size_t i = 0; i < rows.size(); ++i) {
-    const std::string row = path + ": surface.control_points[" + std::to_string(i) + "]";
-    if (!rows[i].is_array()) return Status::Error(row + " must be an array of points");
-    net[i].resize(rows[i].size());
-    for (size_t k = 0; k < net[i].size(); ++k) {
-      s = JsonPoint(rows[i][k], row + "[" + std::to_string(k) + "]", &net[i][k]);
-      if (!s.ok()) return s;
-    }
-  }
+  std::vector<std::vector<Eigen::Vector3d>> net;
+  s = JsonControlNet(j["control_points"], path + ": surface.control_points", &net);
+  if (!s.ok()) return s;
   return BSplineSurface::Create(degree_u, degree_v, std::move(knots_u), std::move(knots_v),
                                 std::move(net), path + ": surface", surface);
 }
