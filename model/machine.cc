@@ -175,6 +175,24 @@ void Machine::ToWorkpiece(const JointVector& joints, Eigen::Vector3d* p_w_tip,
   if (a_w != nullptr) *a_w = AnglesToAxis<double>(joints[kA], joints[kC]);
 }
 
+Status Machine::CheckTravel(const ToolPath& path, const std::vector<JointVector>& joints) const {
+  CHECK_EQ(joints.size(), path.poses.size());
+  for (size_t i = 0; i < joints.size(); ++i) {
+    for (int a = 0; a < 5; ++a) {
+      const AxisLimits& travel = limits[a];
+      if (joints[i][a] >= travel.min - 1e-9 && joints[i][a] <= travel.max + 1e-9) continue;
+      // Rotary joints are radians inside; the machine file gives degrees.
+      const double scale = a >= kA ? 180.0 / M_PI : 1.0;
+      std::ostringstream err;
+      err << "pose " << i << " (line " << path.poses[i].source_line << "): " << kAxisNames[a]
+          << " = " << joints[i][a] * scale << " is outside the travel [" << travel.min * scale
+          << ", " << travel.max * scale << "]";
+      return Status::Error(err.str());
+    }
+  }
+  return Status::Ok();
+}
+
 Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joints,
                              std::string* warning) const {
   CHECK(joints != nullptr);

@@ -141,6 +141,11 @@ class Machine {
   Status AssignJoints(const ToolPath& path, std::vector<JointVector>* joints,
                       std::string* warning = nullptr) const;
 
+  // Fails, naming the first pose (index and source line), the axis, its
+  // value and the travel, when a joint vector of `joints` (one per pose of
+  // `path`, from AssignJoints) lies outside an axis' travel.
+  Status CheckTravel(const ToolPath& path, const std::vector<JointVector>& joints) const;
+
   static constexpr double kSingularSinA = 1e-6;
 };
 

@@ -7,6 +7,15 @@
 namespace tpopt {
 namespace {
 
+// A smoother that moves a pose outside the travel writes a program the
+// machine stops on, so both ends of the run are held to it.
+Status WithinTravel(const Machine& machine, const ToolPath& path) {
+  std::vector<JointVector> joints;
+  Status s = machine.AssignJoints(path, &joints);
+  if (s.ok()) s = machine.CheckTravel(path, joints);
+  return s;
+}
+
 Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure* failure) {
   *failure = kind;
   return Status::Error(message);
@@ -37,6 +46,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                         settings.motion, metrics);
   };
   Status s = evaluate("the input", *job.input, &result->input_metrics);
+  if (s.ok()) s = WithinTravel(*job.machine, *job.input);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
 
   SplineSmootherOptions spline_options = settings.spline;
@@ -72,6 +82,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     if (!s.ok()) return Fail(SmoothingFailure::kBadInput, "resampling: " + s.message(), failure);
   }
   s = evaluate("the output", result->output, &result->output_at_input_feed);
+  if (s.ok()) s = WithinTravel(*job.machine, result->output);
   if (!s.ok()) {
     return Fail(SmoothingFailure::kSolver,
                 "the smoothed path does not fit the machine (" + s.message() + ")", failure);

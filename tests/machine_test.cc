@@ -176,5 +176,30 @@ TEST(AssignJointsTest, RejectsZeroLengthAxis) {
   EXPECT_NE(s.message().find("pose 1"), std::string::npos) << s.message();
 }
 
+TEST(CheckTravelTest, NamesThePoseTheAxisTheValueAndTheTravel) {
+  Machine m;
+  m.limits[kX].min = -10.0;
+  m.limits[kX].max = 10.0;
+  m.limits[kC].min = -90 * kDeg;
+  m.limits[kC].max = 90 * kDeg;
+  std::vector<Eigen::Vector3d> axes(5, AnglesToAxis(10 * kDeg, 0.0));
+  const ToolPath path = PathFromAxes(axes);
+  std::vector<JointVector> j(5, JointVector::Zero());
+  EXPECT_TRUE(m.CheckTravel(path, j).ok());
+  j[2][kX] = 12.5;
+  Status s = m.CheckTravel(path, j);
+  ASSERT_FALSE(s.ok());
+  for (const char* part : {"pose 2", "line 3", "X = 12.5", "[-10, 10]"}) {
+    EXPECT_NE(s.message().find(part), std::string::npos) << part << ": " << s.message();
+  }
+  j[2][kX] = 0.0;
+  j[4][kC] = 120 * kDeg;  // reported in degrees, as the machine file gives it
+  s = m.CheckTravel(path, j);
+  ASSERT_FALSE(s.ok());
+  for (const char* part : {"pose 4", "C = 120", "[-90, 90]"}) {
+    EXPECT_NE(s.message().find(part), std::string::npos) << part << ": " << s.message();
+  }
+}
+
 }  // namespace
 }  // namespace tpopt
