@@ -17,10 +17,7 @@ constexpr double kDeg = M_PI / 180.0;
 class CeresSmootherTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(
-        ReadSurfaceJson(testing::SourcePath("data/surfaces/impeller_blade.json"), &surface_).ok());
-    ASSERT_TRUE(
-        ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &machine_).ok());
+    ASSERT_NO_FATAL_FAILURE(testing::LoadImpellerBench(&surface_, &machine_));
     FlankPathOptions g;
     g.poses = 150;
     ASSERT_TRUE(GenerateFlankPath(surface_, g, &clean_).ok());

@@ -81,10 +81,7 @@ TEST(InterpolateStationsTest, ReproducesPosesLinearInArcLength) {
 TEST(CoarseToFineSolveTest, CoarseToFineAndWindowsMatchTheDirectSolve) {
   RuledSurface surface;
   Machine machine;
-  ASSERT_TRUE(
-      ReadSurfaceJson(testing::SourcePath("data/surfaces/impeller_blade.json"), &surface).ok());
-  ASSERT_TRUE(
-      ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &machine).ok());
+  ASSERT_NO_FATAL_FAILURE(testing::LoadImpellerBench(&surface, &machine));
   FlankPathOptions g;
   g.poses = 900;
   g.uv_distortion = 0.03;

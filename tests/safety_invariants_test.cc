@@ -15,10 +15,7 @@ namespace {
 class SafetyInvariantsTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    ASSERT_TRUE(
-        ReadSurfaceJson(testing::SourcePath("data/surfaces/impeller_blade.json"), &surface_).ok());
-    ASSERT_TRUE(
-        ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &machine_).ok());
+    ASSERT_NO_FATAL_FAILURE(testing::LoadImpellerBench(&surface_, &machine_));
     FlankPathOptions g;
     g.poses = 150;
     g.uv_distortion = 0.03;

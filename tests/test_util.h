@@ -18,6 +18,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "model/json_io.h"
+
 namespace tpopt::testing {
 
 // Checks an automatically differentiated cost's Jacobians against central
@@ -106,6 +108,12 @@ inline int CountOccurrences(const std::string& text, const std::string& needle) 
     ++n;
   }
   return n;
+}
+
+// The usual bench: the shared impeller blade on the jcde2022 machine.
+inline void LoadImpellerBench(RuledSurface* surface, Machine* machine) {
+  ASSERT_TRUE(ReadSurfaceJson(SourcePath("data/surfaces/impeller_blade.json"), surface).ok());
+  ASSERT_TRUE(ReadMachineJson(SourcePath("data/machines/jcde2022_ac.json"), machine).ok());
 }
 
 }  // namespace tpopt::testing
