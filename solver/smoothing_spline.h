@@ -26,9 +26,9 @@ class SmoothingSpline {
   static Status Fit(const std::vector<double>& s, const std::vector<double>& y,
                     const std::vector<double>& weights, double smoothing, SmoothingSpline* out);
 
-  // Like Fit, with the largest smoothing (searched on a log scale) whose fit
-  // stays within `tolerance` of every y_i with weight >= 1 (points given a
-  // smaller weight are free to move). Falls back to interpolation.
+  // Like Fit, with the largest smoothing (bisected on a log scale, to 3 %)
+  // whose fit stays within `tolerance` of every y_i with weight >= 1 (points
+  // given a smaller weight are free to move). Falls back to interpolation.
   static Status FitWithinTolerance(const std::vector<double>& s, const std::vector<double>& y,
                                    const std::vector<double>& weights, double tolerance,
                                    SmoothingSpline* out);
