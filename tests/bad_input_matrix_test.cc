@@ -1,6 +1,7 @@
 // The bad-input matrix, end to end through the tpopt command: every row
 // gives a clear message and no partial output file; rows that are errors
 // give exit 1 and name the file and the line, pose or key.
+#include <sys/resource.h>
 #include <sys/stat.h>
 
 #include <cstdio>
@@ -152,6 +153,34 @@ TEST_F(BadInputMatrixTest, DegeneratePathsNeverCrashOrLeaveHalfFiles) {
       }
     }
   }
+}
+
+// A very large program (600,000 moves, about 30 MB) with one bad number on
+// its last line: the reader streams it, so the error names that line, the
+// whole run stays within a memory bound far below what a quadratic or
+// per-line-allocating reader would need, and nothing is written.
+TEST_F(BadInputMatrixTest, VeryLargeInputStreamsToTheErrorOnItsLastLine) {
+  constexpr int kMoves = 600000;
+  const std::string in = dir_.File("large.cls");
+  {
+    std::ofstream out(in);
+    out << "CUTTER/8\n";
+    for (int i = 0; i < kMoves; ++i) {
+      out << "GOTO/" << 0.001 * i << ",-4,41.7,0.97,0,0.2431049\n";
+    }
+    out << "GOTO/1,2,nan,0,0,1\n";
+  }
+  const auto r = RunCommand(testing::TpoptBinary() + " evaluate --quiet --in=" + in +
+                            " --report=" + dir_.File("large.json"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("large.cls"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(std::to_string(kMoves + 2)), std::string::npos) << r.output;
+  EXPECT_FALSE(FileExists(dir_.File("large.json")));
+  struct rusage usage {};
+  ASSERT_EQ(getrusage(RUSAGE_CHILDREN, &usage), 0);
+  // ru_maxrss is in KiB on Linux. 600,000 poses hold about 60 MB; the
+  // sanitizer build roughly triples that.
+  EXPECT_LT(usage.ru_maxrss, 600 * 1024) << "peak memory of the largest child, KiB";
 }
 
 }  // namespace
