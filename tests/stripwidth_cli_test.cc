@@ -44,7 +44,10 @@ TEST(StripWidthCliTest, WritesAPathAndReportThatSmoothTakesWithoutASurface) {
     EXPECT_TRUE(j["A"].contains("peak_second_derivative_per_mm2")) << j.dump();
   }
   // Sturz keeps its lead; MPEC centres its strips on the CC points.
-  for (const auto& p : ReadJson(dir.File("sturz.json"))["cc_points"]) {
+  // Held in a variable: a range-for over a member of a temporary would read
+  // freed memory.
+  const nlohmann::json sturz = ReadJson(dir.File("sturz.json"));
+  for (const auto& p : sturz["cc_points"]) {
     EXPECT_NEAR(p["lead_deg"].get<double>(), 10.0, 1e-9);
   }
   EXPECT_LT(ReadJson(dir.File("mpec.json"))["strips"]["max_strip_mid_offset_mm"].get<double>(),
