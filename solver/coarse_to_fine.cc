@@ -41,8 +41,11 @@ std::vector<size_t> CoarseStations(const ToolPath& path, size_t target) {
 }
 
 ToolPath SubPath(const ToolPath& path, const std::vector<size_t>& indices) {
-  ToolPath out = path;
-  out.poses.clear();
+  // Not a copy of `path` with its poses cleared: windows take SubPaths of a
+  // million-pose path dozens of times.
+  ToolPath out;
+  out.cutter = path.cutter;
+  out.title = path.title;
   out.poses.reserve(indices.size());
   for (size_t i : indices) out.poses.push_back(path.poses[i]);
   return out;
