@@ -1,7 +1,8 @@
 // The spline-vs-Ceres quality table: for every case of the suite (the three
-// shared surfaces x {clean SPO, distorted CAM path} x both shared machines)
-// run the plain spline method and the high-accuracy mode and print one
-// Markdown table; `--out=FILE.csv` also writes it as CSV.
+// shared surfaces x {clean SPO, distorted CAM path} x both shared machines,
+// plus LinuxCNC's impeller program surface-free when linuxcnc-uspace is
+// installed) run the plain spline method and the high-accuracy mode and
+// print one Markdown table; `--out=FILE.csv` also writes it as CSV.
 //
 //   ./build/benchmarks/quality_benchmark [--out=quality.csv] [--poses=300]
 //
@@ -10,6 +11,7 @@
 // at the input's programmed feed (what the geometry alone demands) and as
 // written, after feed scheduling (what the machine will run).
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -17,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "model/gcode_io.h"
 #include "model/json_io.h"
 #include "model/path_generator.h"
 #include "solver/smoothing_pipeline.h"
@@ -25,9 +28,17 @@ namespace tpopt {
 namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
+constexpr double kNoValue = std::nan("");
+
+// LinuxCNC's own 7-blade impeller program for the xyzac-trt sim machine
+// (Debian linuxcnc-uspace); not copied into the repository (its licence).
+constexpr char kLinuxCncImpeller[] =
+    "/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/vismach/5axis/"
+    "table-rotary-tilting/demos/impeller-7bl-xyzac.ngc";
 
 struct Row {
   std::string surface, machine, path, mode;
+  // NaN for a surface-free case (no surface to measure against).
   double dpo_mm = 0, overcut_mm = 0, undercut_mm = 0, rms_mm = 0;
   double a_acc_input_feed = 0, c_acc_input_feed = 0;
   double a_vel = 0, c_vel = 0, a_acc = 0, c_acc = 0, a_jerk = 0, c_jerk = 0;
@@ -39,12 +50,11 @@ std::string Data(const std::string& relative) {
   return std::string(TPOPT_SOURCE_DIR) + "/data/" + relative;
 }
 
-bool Fill(const SmoothingResult& r, double wall_s, Row* row) {
+void Fill(const SmoothingResult& r, double wall_s, Row* row) {
   const PathMetrics& out = r.output_metrics;
-  if (!out.deviation) return false;
-  row->overcut_mm = out.deviation->max_overcut_mm;
-  row->undercut_mm = out.deviation->max_undercut_mm;
-  row->rms_mm = out.deviation->rms_deviation_mm;
+  row->overcut_mm = out.deviation ? out.deviation->max_overcut_mm : kNoValue;
+  row->undercut_mm = out.deviation ? out.deviation->max_undercut_mm : kNoValue;
+  row->rms_mm = out.deviation ? out.deviation->rms_deviation_mm : kNoValue;
   row->a_acc_input_feed = r.output_at_input_feed.motion.axes[kA].peak_acceleration * kRadToDeg;
   row->c_acc_input_feed = r.output_at_input_feed.motion.axes[kC].peak_acceleration * kRadToDeg;
   row->a_vel = out.motion.axes[kA].peak_velocity * kRadToDeg;
@@ -57,7 +67,6 @@ bool Fill(const SmoothingResult& r, double wall_s, Row* row) {
   row->violations = out.motion.limit_violations;
   row->machining_time_s = out.motion.machining_time_s;
   row->solve_time_s = wall_s;
-  return true;
 }
 
 double WorstMm(const RuledSurface& surface, const Machine& machine, const ToolPath& path) {
@@ -67,6 +76,59 @@ double WorstMm(const RuledSurface& surface, const Machine& machine, const ToolPa
     return -1;
   }
   return WorstDeviationMm(m);
+}
+
+// Adds one row per mode for `input`; `base` names the case.
+void RunBothModes(const ToolPath& input, const RuledSurface* surface, const Cutter& cutter,
+                  const Machine& machine, const SmoothingSettings& preset, const Row& base,
+                  double dpo_mm, std::vector<Row>* rows) {
+  for (const SmoothingMode mode : {SmoothingMode::kSpline, SmoothingMode::kHighAccuracy}) {
+    SmoothingSettings settings = preset;
+    settings.mode = mode;
+    SmoothingResult result;
+    SmoothingFailure failure;
+    const auto start = std::chrono::steady_clock::now();
+    const Status s = RunSmoothing({&input, surface, &cutter, &machine}, settings, &result,
+                                  &failure);
+    const double wall_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    Row row = base;
+    row.mode = mode == SmoothingMode::kSpline ? "spline" : "high_accuracy";
+    row.dpo_mm = dpo_mm;
+    if (s.ok()) {
+      Fill(result, wall_s, &row);
+    } else {
+      std::fprintf(stderr, "%s %s %s: %s\n", base.surface.c_str(), base.machine.c_str(),
+                   row.mode.c_str(), s.message().c_str());
+      row.violations = -1;
+    }
+    rows->push_back(row);
+    std::fprintf(stderr, ".");
+  }
+}
+
+// LinuxCNC's impeller program smoothed without a surface, with the settings
+// of data/presets/surface_free.flags and a 3 mm cutter (as in the README).
+void RunLinuxCncImpeller(std::vector<Row>* rows) {
+  Machine machine;
+  ToolPath input;
+  std::vector<std::string> warnings;
+  if (!ReadMachineJson(Data("machines/linuxcnc_xyzac_trt_sim.json"), &machine).ok() ||
+      !ReadGcode(kLinuxCncImpeller, machine, GcodeStyle::kTcp, &input, &warnings).ok()) {
+    std::fprintf(stderr, "\n%s not readable (linuxcnc-uspace not installed?): case skipped\n",
+                 kLinuxCncImpeller);
+    return;
+  }
+  SmoothingSettings preset;
+  preset.high_accuracy.tolerance_mm = 0.01;
+  preset.high_accuracy.angle_tolerance_deg = 0.5;
+  preset.high_accuracy.w_second = 1e6;
+  preset.high_accuracy.w_third = 0;
+  preset.high_accuracy.w_tip_second = 0;
+  Cutter cutter;
+  cutter.radius_mm = 3.0;
+  const Row base{"(none) impeller-7bl-xyzac.ngc", "linuxcnc_xyzac_trt_sim", "LinuxCNC program", ""};
+  RunBothModes(input, nullptr, cutter, machine, preset, base, kNoValue, rows);
 }
 
 std::vector<Row> RunSuite(int poses) {
@@ -89,30 +151,14 @@ std::vector<Row> RunSuite(int poses) {
         g.axis_noise_deg = distorted ? 0.3 : 0.0;
         ToolPath input;
         GenerateFlankPath(surface, g, &input);
-        for (const SmoothingMode mode : {SmoothingMode::kSpline, SmoothingMode::kHighAccuracy}) {
-          SmoothingSettings settings;
-          settings.mode = mode;
-          SmoothingResult result;
-          SmoothingFailure failure;
-          const auto start = std::chrono::steady_clock::now();
-          const Status s = RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings,
-                                        &result, &failure);
-          const double wall_s =
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          Row row{surface_name, machine_name, distorted ? "CAM (uv 0.03, 0.3 deg)" : "clean SPO",
-                  mode == SmoothingMode::kSpline ? "spline" : "high_accuracy"};
-          row.dpo_mm = dpo_mm;
-          if (!s.ok() || !Fill(result, wall_s, &row)) {
-            std::fprintf(stderr, "%s %s %s: %s\n", surface_name, machine_name, row.mode.c_str(),
-                         s.message().c_str());
-            row.violations = -1;
-          }
-          rows.push_back(row);
-          std::fprintf(stderr, ".");
-        }
+        const Row base{surface_name, machine_name,
+                       distorted ? "CAM (uv 0.03, 0.3 deg)" : "clean SPO", ""};
+        RunBothModes(input, &surface, *input.cutter, machine, SmoothingSettings(), base, dpo_mm,
+                     &rows);
       }
     }
   }
+  RunLinuxCncImpeller(&rows);
   std::fprintf(stderr, "\n");
   return rows;
 }
@@ -123,12 +169,21 @@ void PrintMarkdown(const std::vector<Row>& rows) {
       "max dev / DPO | A, C peak acc at input feed deg/s^2 | A, C peak vel deg/s | A, C peak acc "
       "deg/s^2 | A, C peak jerk deg/s^3 | violations in -> out | machining time s | wall s |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  // A number, or a dash where there is none (surface-free cases).
+  auto cell = [](double v, const char* format) {
+    if (std::isnan(v)) return std::string("—");
+    char text[64];
+    std::snprintf(text, sizeof(text), format, v);
+    return std::string(text);
+  };
   for (const Row& r : rows) {
     std::printf(
-        "| %s | %s | %s | %s | %.4f | %.4f | %.4f | %.2f | %.1f, %.1f | %.2f, %.2f | %.1f, %.1f | "
+        "| %s | %s | %s | %s | %s | %s | %s | %s | %.1f, %.1f | %.2f, %.2f | %.1f, %.1f | "
         "%.0f, %.0f | %d -> %d | %.1f | %.3f |\n",
-        r.surface.c_str(), r.machine.c_str(), r.path.c_str(), r.mode.c_str(), r.overcut_mm,
-        r.undercut_mm, r.rms_mm, std::max(r.overcut_mm, r.undercut_mm) / r.dpo_mm,
+        r.surface.c_str(), r.machine.c_str(), r.path.c_str(), r.mode.c_str(),
+        cell(r.overcut_mm, "%.4f").c_str(), cell(r.undercut_mm, "%.4f").c_str(),
+        cell(r.rms_mm, "%.4f").c_str(),
+        cell(std::max(r.overcut_mm, r.undercut_mm) / r.dpo_mm, "%.2f").c_str(),
         r.a_acc_input_feed, r.c_acc_input_feed, r.a_vel, r.c_vel, r.a_acc, r.c_acc, r.a_jerk,
         r.c_jerk, r.violations_input, r.violations, r.machining_time_s, r.solve_time_s);
   }
