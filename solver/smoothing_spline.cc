@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-
+#include <utility>
 
 namespace tpopt {
 namespace {
@@ -34,15 +34,35 @@ Status CheckInputs(const std::vector<double>& s, const std::vector<double>& y,
   return Status::Ok();
 }
 
+// `v` resized to `size` zeros, keeping its capacity.
+std::vector<double>& Zeroed(size_t size, std::vector<double>* v) {
+  v->assign(size, 0.0);
+  return *v;
+}
+
 }  // namespace
+
+// The banded system's buffers, kept between the trial fits of
+// FitWithinTolerance: a million-point run would otherwise fault in a
+// hundred megabytes of fresh pages per trial.
+struct SmoothingSpline::Scratch {
+  std::vector<double> h, q0, q1, q2, w_inv, d0, d1, d2, rhs, dd, l1, l2, gamma;
+};
 
 Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<double>& y,
                             const std::vector<double>& weights, double smoothing,
                             SmoothingSpline* out) {
+  Scratch scratch;
+  return FitWithScratch(s, y, weights, smoothing, &scratch, out);
+}
+
+Status SmoothingSpline::FitWithScratch(const std::vector<double>& s, const std::vector<double>& y,
+                                       const std::vector<double>& weights, double smoothing,
+                                       Scratch* scratch, SmoothingSpline* out) {
   Status st = CheckInputs(s, y, weights, smoothing);
   if (!st.ok()) return st;
   const int n = static_cast<int>(s.size());
-  std::vector<double> h(n - 1);
+  std::vector<double>& h = Zeroed(n - 1, &scratch->h);
   for (int i = 0; i + 1 < n; ++i) h[i] = s[i + 1] - s[i];
   const double mean_h = (s.back() - s.front()) / (n - 1);
   const double lambda = smoothing * mean_h * mean_h * mean_h;
@@ -58,14 +78,20 @@ Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<doub
   // R + lambda Q^T W^-1 Q is symmetric pentadiagonal: assemble its three
   // diagonals directly and factor it by banded LDL^T, O(n) with no fill.
   const int m = n - 2;
-  std::vector<double> q0(m), q1(m), q2(m), w_inv(n);
+  std::vector<double>& q0 = Zeroed(m, &scratch->q0);
+  std::vector<double>& q1 = Zeroed(m, &scratch->q1);
+  std::vector<double>& q2 = Zeroed(m, &scratch->q2);
+  std::vector<double>& w_inv = Zeroed(n, &scratch->w_inv);
   for (int i = 0; i < n; ++i) w_inv[i] = weights.empty() ? 1.0 : 1.0 / weights[i];
   for (int j = 0; j < m; ++j) {
     q0[j] = 1.0 / h[j];
     q1[j] = -1.0 / h[j] - 1.0 / h[j + 1];
     q2[j] = 1.0 / h[j + 1];
   }
-  std::vector<double> d0(m), d1(m, 0.0), d2(m, 0.0), rhs(m);
+  std::vector<double>& d0 = Zeroed(m, &scratch->d0);
+  std::vector<double>& d1 = Zeroed(m, &scratch->d1);
+  std::vector<double>& d2 = Zeroed(m, &scratch->d2);
+  std::vector<double>& rhs = Zeroed(m, &scratch->rhs);
   for (int j = 0; j < m; ++j) {
     d0[j] = (h[j] + h[j + 1]) / 3.0 +
             lambda * (q0[j] * q0[j] * w_inv[j] + q1[j] * q1[j] * w_inv[j + 1] +
@@ -79,7 +105,9 @@ Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<doub
   }
   // LDL^T of the pentadiagonal matrix: L has unit diagonal and two
   // subdiagonals l1, l2; D is diagonal.
-  std::vector<double> dd(m), l1(m, 0.0), l2(m, 0.0);
+  std::vector<double>& dd = Zeroed(m, &scratch->dd);
+  std::vector<double>& l1 = Zeroed(m, &scratch->l1);
+  std::vector<double>& l2 = Zeroed(m, &scratch->l2);
   for (int j = 0; j < m; ++j) {
     double diag = d0[j];
     if (j >= 1) diag -= l1[j - 1] * l1[j - 1] * dd[j - 1];
@@ -93,7 +121,8 @@ Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<doub
     }
     if (j + 2 < m) l2[j] = d2[j] / diag;
   }
-  std::vector<double> gamma(rhs);
+  std::vector<double>& gamma = scratch->gamma;
+  gamma = rhs;
   for (int j = 0; j < m; ++j) {  // L z = rhs
     if (j >= 1) gamma[j] -= l1[j - 1] * gamma[j - 1];
     if (j >= 2) gamma[j] -= l2[j - 2] * gamma[j - 2];
@@ -128,19 +157,19 @@ Status SmoothingSpline::FitWithinTolerance(const std::vector<double>& s,
   };
   // Bisection on log10(smoothing) in [-6, 8].
   double lo = -6.0, hi = 8.0;
-  SmoothingSpline best;
-  Status st = Fit(s, y, weights, 0.0, &best);
+  Scratch scratch;
+  SmoothingSpline best, trial;
+  Status st = FitWithScratch(s, y, weights, 0.0, &scratch, &best);
   if (!st.ok()) return st;
   // 10 halvings of 14 decades find the smoothing to within 3 %; the fit
   // changes by far less than the tolerance over such a step, and every fit
   // costs as much as the rest of the spline method, so finer is waste.
   for (int iter = 0; iter < 10; ++iter) {
     const double mid = 0.5 * (lo + hi);
-    SmoothingSpline trial;
-    st = Fit(s, y, weights, std::pow(10.0, mid), &trial);
+    st = FitWithScratch(s, y, weights, std::pow(10.0, mid), &scratch, &trial);
     if (!st.ok()) return st;
     if (within(trial)) {
-      best = std::move(trial);
+      std::swap(best, trial);  // trial keeps the old buffers for the next try
       lo = mid;
     } else {
       hi = mid;

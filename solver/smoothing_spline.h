@@ -43,6 +43,11 @@ class SmoothingSpline {
   double smoothing() const { return smoothing_; }
 
  private:
+  struct Scratch;
+  static Status FitWithScratch(const std::vector<double>& s, const std::vector<double>& y,
+                               const std::vector<double>& weights, double smoothing,
+                               Scratch* scratch, SmoothingSpline* out);
+
   std::vector<double> s_, f_, gamma_;
   double smoothing_ = 0.0;
 };

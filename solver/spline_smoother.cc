@@ -130,8 +130,10 @@ Status SmoothRun(const ToolPath& in, const Machine& machine, const RuledSurface*
   Status st = machine.AssignJoints(in, &joints);
   if (!st.ok()) return st;
   const size_t n = in.poses.size();
-  *out = in;
-  if (n < 4) return Status::Ok();  // nothing to smooth
+  if (n < 4) {  // nothing to smooth
+    *out = in;
+    return Status::Ok();
+  }
   std::vector<double> s(n, 0.0), a(n), c(n);
   for (size_t i = 0; i < n; ++i) {
     a[i] = joints[i][kA];
@@ -177,7 +179,10 @@ Status SmoothRun(const ToolPath& in, const Machine& machine, const RuledSurface*
     if (surface != nullptr) p.p_w_tip = TangentTip(*surface, cutter.radius_mm, u_contact, p.a_w);
     return p;
   };
+  out->cutter = in.cutter;
+  out->title = in.title;
   out->poses.clear();
+  out->poses.reserve(options.insert_transitions ? 2 * n : n);
   for (size_t i = 0; i < n; ++i) {
     if (!movable(i) || (!zone[i] && !options.smooth_outside_zones)) {
       out->poses.push_back(in.poses[i]);
@@ -209,15 +214,20 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   std::string why;
   if (!options.IsValid(&why)) return Status::Error("spline options: " + why);
   *report = SplineSmootherReport();
-  ToolPath result = in;
-  result.poses.clear();
+  ToolPath result;
+  result.cutter = in.cutter;
+  result.title = in.title;
+  result.poses.reserve(in.poses.size());
   // Each cutting run separately: a spline must not bridge a rapid between
   // two passes. A run starts at the pose a rapid reaches.
   const size_t n = in.poses.size();
   for (size_t first = 0; first < n;) {
     size_t end = first + 1;
     while (end < n && !in.poses[end].rapid) ++end;
-    ToolPath run = in;
+    // Built field by field: a copy of `in` per run is a copy of every pose.
+    ToolPath run;
+    run.cutter = in.cutter;
+    run.title = in.title;
     run.poses.assign(in.poses.begin() + first, in.poses.begin() + end);
     ToolPath smoothed;
     Status st = SmoothRun(run, machine, surface, cutter, options, &smoothed, report);
