@@ -108,8 +108,7 @@ MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,
   // Travel.
   for (size_t i = 0; i < n; ++i) {
     for (int a = 0; a < 5; ++a) {
-      const AxisLimits& lim = machine.limits[a];
-      if (joints[i][a] < lim.min - 1e-9 || joints[i][a] > lim.max + 1e-9) {
+      if (!machine.limits[a].InTravel(joints[i][a])) {
         Flag(a, static_cast<int>(i), 1.0, &report, &worst_excess);
       }
     }

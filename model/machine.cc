@@ -180,7 +180,7 @@ Status Machine::CheckTravel(const ToolPath& path, const std::vector<JointVector>
   for (size_t i = 0; i < joints.size(); ++i) {
     for (int a = 0; a < 5; ++a) {
       const AxisLimits& travel = limits[a];
-      if (joints[i][a] >= travel.min - 1e-9 && joints[i][a] <= travel.max + 1e-9) continue;
+      if (travel.InTravel(joints[i][a])) continue;
       // Rotary joints are radians inside; the machine file gives degrees.
       const double scale = a >= kA ? 180.0 / M_PI : 1.0;
       std::ostringstream err;

@@ -38,6 +38,10 @@ struct AxisLimits {
   double max_velocity = std::numeric_limits<double>::infinity();
   double max_acceleration = std::numeric_limits<double>::infinity();
   double max_jerk = std::numeric_limits<double>::infinity();
+
+  // `joint` within [min, max], with a nanometre's (or nanoradian's) slack
+  // for round-off.
+  bool InTravel(double joint) const { return joint >= min - 1e-9 && joint <= max + 1e-9; }
 };
 
 struct KinematicParams {

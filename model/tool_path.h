@@ -33,6 +33,15 @@ struct ToolPath {
   std::string title;
 };
 
+// `path` without its poses, cutter and title kept: where a derived path
+// starts, without first copying every pose of the original.
+inline ToolPath WithoutPoses(const ToolPath& path) {
+  ToolPath out;
+  out.cutter = path.cutter;
+  out.title = path.title;
+  return out;
+}
+
 }  // namespace tpopt
 
 #endif  // TPOPT_MODEL_TOOL_PATH_H_

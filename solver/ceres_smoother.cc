@@ -370,8 +370,7 @@ std::vector<size_t> DistinctIndex(const ToolPath& path) {
 }
 
 ToolPath Distinct(const ToolPath& path, const std::vector<size_t>& index) {
-  ToolPath out = path;
-  out.poses.clear();
+  ToolPath out = WithoutPoses(path);
   for (size_t i = 0; i < path.poses.size(); ++i) {
     if (i == 0 || index[i] != index[i - 1]) out.poses.push_back(path.poses[i]);
   }

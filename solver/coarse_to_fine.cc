@@ -31,7 +31,8 @@ std::vector<double> TipArcLength(const ToolPath& path) {
 
 std::vector<size_t> CoarseStations(const ToolPath& path, size_t target) {
   const size_t n = path.poses.size();
-  const size_t stride = std::max<size_t>(1, (n + std::max<size_t>(target, 1) - 1) / std::max<size_t>(target, 1));
+  const size_t count = std::max<size_t>(target, 1);
+  const size_t stride = std::max<size_t>(1, (n + count - 1) / count);
   std::vector<size_t> stations;
   for (size_t i = 0; i < n; ++i) {
     const bool run_end = i + 1 == n || path.poses[i + 1].rapid;
@@ -43,9 +44,7 @@ std::vector<size_t> CoarseStations(const ToolPath& path, size_t target) {
 ToolPath SubPath(const ToolPath& path, const std::vector<size_t>& indices) {
   // Not a copy of `path` with its poses cleared: windows take SubPaths of a
   // million-pose path dozens of times.
-  ToolPath out;
-  out.cutter = path.cutter;
-  out.title = path.title;
+  ToolPath out = WithoutPoses(path);
   out.poses.reserve(indices.size());
   for (size_t i : indices) out.poses.push_back(path.poses[i]);
   return out;

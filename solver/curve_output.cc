@@ -83,9 +83,7 @@ Status FitToolPathCurves(const ToolPath& in, const CurveOutputOptions& options, 
                          std::vector<AptCurveSpan>* records) {
   std::string why;
   if (!options.IsValid(&why)) return Status::Error(why);
-  out->poses.clear();
-  out->cutter = in.cutter;
-  out->title = in.title;
+  *out = WithoutPoses(in);
   records->clear();
   // Input index of the last input pose written; a run that starts at a
   // corner starts where the run before ended.

@@ -69,8 +69,7 @@ Status ResamplePath(const ToolPath& in, const Machine& machine, const ResampleOp
   std::vector<JointVector> joints;
   Status st = machine.AssignJoints(in, &joints);
   if (!st.ok()) return st;
-  ToolPath result = in;
-  result.poses.clear();
+  ToolPath result = WithoutPoses(in);
   for (size_t first = 0; first < in.poses.size();) {
     size_t end = first + 1;
     while (end < in.poses.size() && !in.poses[end].rapid) ++end;

@@ -179,9 +179,7 @@ Status SmoothRun(const ToolPath& in, const Machine& machine, const RuledSurface*
     if (surface != nullptr) p.p_w_tip = TangentTip(*surface, cutter.radius_mm, u_contact, p.a_w);
     return p;
   };
-  out->cutter = in.cutter;
-  out->title = in.title;
-  out->poses.clear();
+  *out = WithoutPoses(in);
   out->poses.reserve(options.insert_transitions ? 2 * n : n);
   for (size_t i = 0; i < n; ++i) {
     if (!movable(i) || (!zone[i] && !options.smooth_outside_zones)) {
@@ -214,9 +212,7 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   std::string why;
   if (!options.IsValid(&why)) return Status::Error("spline options: " + why);
   *report = SplineSmootherReport();
-  ToolPath result;
-  result.cutter = in.cutter;
-  result.title = in.title;
+  ToolPath result = WithoutPoses(in);
   result.poses.reserve(in.poses.size());
   // Each cutting run separately: a spline must not bridge a rapid between
   // two passes. A run starts at the pose a rapid reaches.
@@ -224,10 +220,8 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   for (size_t first = 0; first < n;) {
     size_t end = first + 1;
     while (end < n && !in.poses[end].rapid) ++end;
-    // Built field by field: a copy of `in` per run is a copy of every pose.
-    ToolPath run;
-    run.cutter = in.cutter;
-    run.title = in.title;
+    // Not a copy of `in`: that would copy every pose once per run.
+    ToolPath run = WithoutPoses(in);
     run.poses.assign(in.poses.begin() + first, in.poses.begin() + end);
     ToolPath smoothed;
     Status st = SmoothRun(run, machine, surface, cutter, options, &smoothed, report);
