@@ -60,9 +60,9 @@ DEFINE_double(angle_tolerance_deg, 0.5,
               "original, deg.");
 DEFINE_double(overcut_factor, 3.0, "high_accuracy: weight of overcut relative to undercut (>= 1).");
 DEFINE_double(w_deviation, 1.0, "high_accuracy: weight of the swept-cutter deviation.");
-DEFINE_double(w_second, 1e3,
+DEFINE_double(w_second, 300,
               "high_accuracy: weight of d2(A,C)/ds2, mm^4/rad^2 (solver/smoothness_cost.h).");
-DEFINE_double(w_third, 1e4, "high_accuracy: weight of d3(A,C)/ds3, mm^6/rad^2.");
+DEFINE_double(w_third, 3000, "high_accuracy: weight of d3(A,C)/ds3, mm^6/rad^2.");
 DEFINE_double(w_tip_second, 1e-2, "high_accuracy: weight of the tip's d2p/ds2, mm^2.");
 DEFINE_double(w_tip_third, 0.0, "high_accuracy: weight of the tip's d3p/ds3, mm^4.");
 DEFINE_double(w_limits, 0.0, "high_accuracy: weight of axis velocity/acceleration/jerk excess.");
@@ -79,6 +79,9 @@ DEFINE_int32(refine_iterations, 5,
 DEFINE_int32(window_poses, 20000,
              "high_accuracy: longer problems are solved in overlapping windows of this many poses, "
              "which bounds the memory (0 = never).");
+DEFINE_double(pole_passage_deg, 5.0,
+              "high_accuracy: stretches whose axis passes within this angle of A = 0 while C turns "
+              "a quarter turn or more are also solved the other way round the pole (0 = never).");
 DEFINE_int32(num_threads, 2, "high_accuracy: Ceres threads (the same count gives the same result).");
 DEFINE_double(spline_tolerance_deg, 0.05,
               "spline: largest A/C change the fit may make outside the abrupt zones, deg "

@@ -106,7 +106,9 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                        {"initial_cost", ha.initial_cost},
                        {"final_cost", ha.final_cost},
                        {"final_cost_by_family", ha.final_cost_by_family},
-                       {"poses_clamped_to_band", ha.poses_clamped}};
+                       {"poses_clamped_to_band", ha.poses_clamped},
+                       {"pole_passages", ha.pole_passages},
+                       {"pole_passages_rerouted", ha.pole_passages_rerouted}};
   }
   return report;
 }

@@ -63,6 +63,10 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
     const HighAccuracyReport& ha = result.high_accuracy;
     std::printf("  high_accuracy: %d iterations, %.3f s, cost %.4g -> %.4g\n", ha.iterations,
                 ha.solve_time_s, ha.initial_cost, ha.final_cost);
+    if (ha.pole_passages > 0) {
+      std::printf("  pole passages: %d solved both ways round A = 0, %d kept the other way\n",
+                  ha.pole_passages, ha.pole_passages_rerouted);
+    }
   }
   if (result.feed.moves_slowed > 0) {
     std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",

@@ -15,6 +15,7 @@
 #include "model/path_generator.h"
 #include "solver/bspline_fit.h"
 #include "solver/ceres_smoother.h"
+#include "solver/pole_passage.h"
 #include "solver/spline_smoother.h"
 
 namespace tpopt {
@@ -57,7 +58,7 @@ void BM_HighAccuracy(benchmark::State& state) {
     ToolPath out;
     HighAccuracyReport report;
     const SmoothingInputs inputs{&path, &guess, &b.surface, &*path.cutter, &b.machine};
-    SmoothHighAccuracy(inputs, options, &out, &report);
+    SmoothBothWaysRoundPoles(inputs, options, &out, &report);
     state.counters["iterations"] = report.iterations;
   }
   state.counters["poses/s"] =

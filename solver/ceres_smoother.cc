@@ -260,6 +260,8 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
   } else if (coarse_poses < 0 || refine_iterations < 0) {
     err << "coarse poses " << coarse_poses << " and refine iterations " << refine_iterations
         << " must be >= 0";
+  } else if (!(pole_passage_deg >= 0 && pole_passage_deg < 90)) {
+    err << "pole passage angle " << pole_passage_deg << " deg must be in [0, 90)";
   } else if (max_iterations < 0 || num_threads < 1) {
     err << "max iterations " << max_iterations << " must be >= 0 and threads " << num_threads
         << " >= 1";

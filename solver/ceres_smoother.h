@@ -41,8 +41,8 @@ struct HighAccuracyOptions {
   double w_deviation = 1.0;
   // Weights of the second/third derivative of A and C over arc length,
   // mm^4/rad^2 and mm^6/rad^2 (see smoothness_cost.h).
-  double w_second = 1e3;
-  double w_third = 1e4;
+  double w_second = 300;
+  double w_third = 3000;
   // Weights of the second/third derivative of the tip, mm^2 and mm^4.
   double w_tip_second = 1e-2;
   double w_tip_third = 0.0;
@@ -86,6 +86,11 @@ struct HighAccuracyOptions {
   // (solver/windowed_solve.h), which bounds the memory. 0 = never; else
   // >= 100.
   int window_poses = 20000;
+  // With a surface, every stretch of the initial guess whose axis stays
+  // within this angle of the pole (A = 0) while C turns by a quarter turn or
+  // more is also solved the other way round the pole, and the cheaper
+  // solution kept (solver/pole_passage.h). Degrees, [0, 90); 0 = never.
+  double pole_passage_deg = 5.0;
   // Ceres' relative cost-change stop.
   double function_tolerance = 1e-6;
   // Jacobian evaluation threads. Runs with the same count give the same
@@ -136,6 +141,10 @@ struct HighAccuracyReport {
   // Surface-free: poses the solve left outside the band, moved back onto
   // its edge.
   int poses_clamped = 0;
+  // Pole passages of the initial guess solved both ways round, and how many
+  // of them the kept solution takes the other way (solver/pole_passage.h).
+  int pole_passages = 0;
+  int pole_passages_rerouted = 0;
 };
 
 // Fills `state` and adds every residual block to `problem`.

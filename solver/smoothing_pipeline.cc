@@ -4,6 +4,8 @@
 
 #include <glog/logging.h>
 
+#include "solver/pole_passage.h"
+
 namespace tpopt {
 namespace {
 
@@ -66,8 +68,8 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     s = evaluate("the initial guess", guess, &result->initial_guess_metrics);
     const SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
     if (s.ok()) stage("high_accuracy solve");
-    if (s.ok()) s = SmoothHighAccuracy(inputs, settings.high_accuracy, &result->output,
-                                       &result->high_accuracy);
+    if (s.ok()) s = SmoothBothWaysRoundPoles(inputs, settings.high_accuracy, &result->output,
+                                             &result->high_accuracy);
     if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
     if (!result->high_accuracy.converged) {
       return Fail(SmoothingFailure::kSolver, "Ceres failed (" + result->high_accuracy.message + ")",

@@ -1,0 +1,114 @@
+#include "solver/pole_passage.h"
+
+#include <cmath>
+
+namespace tpopt {
+namespace {
+
+double PolarAngle(const Eigen::Vector3d& a) { return std::atan2(std::hypot(a.x(), a.y()), a.z()); }
+
+// The azimuth measured as the machine's C on its A >= 0 branch.
+double Azimuth(const Eigen::Vector3d& a) { return std::atan2(a.x(), a.y()); }
+
+// `angle` moved by whole turns to within half a turn of `near`.
+double UnwrapNear(double angle, double near) {
+  return angle + 2.0 * M_PI * std::round((near - angle) / (2.0 * M_PI));
+}
+
+// Unwrapped azimuths of poses first..last; straight over the pole, where
+// the azimuth is undefined, the previous one carries on.
+std::vector<double> UnwrappedAzimuths(const ToolPath& path, size_t first, size_t last) {
+  std::vector<double> azimuth;
+  azimuth.reserve(last - first + 1);
+  double previous = Azimuth(path.poses[first].a_w);
+  for (size_t i = first; i <= last; ++i) {
+    const Eigen::Vector3d& a = path.poses[i].a_w;
+    if (std::hypot(a.x(), a.y()) > 1e-12) previous = UnwrapNear(Azimuth(a), previous);
+    azimuth.push_back(previous);
+  }
+  return azimuth;
+}
+
+}  // namespace
+
+std::vector<PolePassage> FindPolePassages(const ToolPath& path, double pole_angle_rad) {
+  std::vector<PolePassage> passages;
+  const size_t n = path.poses.size();
+  size_t i = 0;
+  while (i < n) {
+    if (PolarAngle(path.poses[i].a_w) >= pole_angle_rad) {
+      ++i;
+      continue;
+    }
+    size_t last = i;
+    while (last + 1 < n && !path.poses[last + 1].rapid &&
+           PolarAngle(path.poses[last + 1].a_w) < pole_angle_rad) {
+      ++last;
+    }
+    const std::vector<double> azimuth = UnwrappedAzimuths(path, i, last);
+    const double sweep = azimuth.back() - azimuth.front();
+    if (std::abs(sweep) >= M_PI / 2) passages.push_back({i, last, sweep});
+    i = last + 1;
+  }
+  return passages;
+}
+
+ToolPath RerouteAroundPole(const ToolPath& path, const PolePassage& passage,
+                           const Cutter& cutter) {
+  ToolPath out = path;
+  const std::vector<double> azimuth = UnwrappedAzimuths(path, passage.first, passage.last);
+  const double sweep = passage.azimuth_sweep_rad;
+  const double other_way = sweep - std::copysign(2.0 * M_PI, sweep);
+  const double scale = other_way / sweep;
+  const double pivot_height = 0.5 * cutter.flute_length_mm;
+  for (size_t i = passage.first; i <= passage.last; ++i) {
+    ToolPose& pose = out.poses[i];
+    const double polar = PolarAngle(pose.a_w);
+    const double turned = azimuth.front() + (azimuth[i - passage.first] - azimuth.front()) * scale;
+    const Eigen::Vector3d axis(std::sin(polar) * std::sin(turned),
+                               std::sin(polar) * std::cos(turned), std::cos(polar));
+    pose.p_w_tip += pivot_height * (pose.a_w - axis);
+    pose.a_w = axis;
+  }
+  return out;
+}
+
+Status SmoothBothWaysRoundPoles(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                                ToolPath* out, HighAccuracyReport* report) {
+  Status s = SmoothHighAccuracy(inputs, options, out, report);
+  if (!s.ok() || !report->converged || inputs.surface == nullptr ||
+      options.pole_passage_deg <= 0) {
+    return s;
+  }
+  const ToolPath& start = inputs.initial_guess != nullptr ? *inputs.initial_guess : *inputs.input;
+  const std::vector<PolePassage> passages =
+      FindPolePassages(start, options.pole_passage_deg * M_PI / 180.0);
+  ToolPath best_guess = start;
+  int iterations = report->iterations;
+  double solve_time_s = report->solve_time_s;
+  int rerouted = 0;
+  for (const PolePassage& passage : passages) {
+    ToolPath guess = RerouteAroundPole(best_guess, passage, *inputs.cutter);
+    SmoothingInputs other_way = inputs;
+    other_way.initial_guess = &guess;
+    ToolPath candidate;
+    HighAccuracyReport candidate_report;
+    s = SmoothHighAccuracy(other_way, options, &candidate, &candidate_report);
+    if (!s.ok()) return s;
+    iterations += candidate_report.iterations;
+    solve_time_s += candidate_report.solve_time_s;
+    if (candidate_report.converged && candidate_report.final_cost < report->final_cost) {
+      *out = std::move(candidate);
+      *report = std::move(candidate_report);
+      best_guess = std::move(guess);
+      ++rerouted;
+    }
+  }
+  report->iterations = iterations;
+  report->solve_time_s = solve_time_s;
+  report->pole_passages = static_cast<int>(passages.size());
+  report->pole_passages_rerouted = rerouted;
+  return Status::Ok();
+}
+
+}  // namespace tpopt
