@@ -92,6 +92,9 @@ DEFINE_double(zone_factor, 8.0,
               "spline: a zone is where |d2A/ds2|, |d2C/ds2| or |dK/ds| exceeds this x median.");
 DEFINE_int32(zone_padding, 3, "spline: poses added on each side of a zone.");
 DEFINE_bool(insert_transitions, false, "spline: insert a transition pose in every zone move.");
+DEFINE_bool(accept_over_tolerance, false,
+            "smooth: with a surface, write a high_accuracy result even where it is farther from "
+            "the surface than --tolerance_mm (by default it is refused, exit 3, nothing written).");
 DEFINE_bool(schedule_feed, true,
             "smooth: lower the feed move by move where an axis would still exceed its velocity, "
             "acceleration or jerk limit (solver/feed_scheduler.h).");

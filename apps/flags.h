@@ -70,6 +70,7 @@ DECLARE_double(zone_factor);
 DECLARE_int32(zone_padding);
 DECLARE_bool(insert_transitions);
 DECLARE_bool(smooth_outside_zones);
+DECLARE_bool(accept_over_tolerance);
 DECLARE_bool(schedule_feed);
 DECLARE_double(resample_step_mm);
 // stripwidth

@@ -108,7 +108,8 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                        {"final_cost_by_family", ha.final_cost_by_family},
                        {"poses_clamped_to_band", ha.poses_clamped},
                        {"pole_passages", ha.pole_passages},
-                       {"pole_passages_rerouted", ha.pole_passages_rerouted}};
+                       {"pole_passages_rerouted", ha.pole_passages_rerouted},
+                       {"solve_tolerance_mm", result.solve_tolerance_mm}};
   }
   return report;
 }

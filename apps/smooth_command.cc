@@ -63,6 +63,10 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
     const HighAccuracyReport& ha = result.high_accuracy;
     std::printf("  high_accuracy: %d iterations, %.3f s, cost %.4g -> %.4g\n", ha.iterations,
                 ha.solve_time_s, ha.initial_cost, ha.final_cost);
+    if (result.solve_tolerance_mm < settings.high_accuracy.tolerance_mm) {
+      std::printf("  solved with the tolerance unit tightened to %.4g mm to hold %.4g mm\n",
+                  result.solve_tolerance_mm, settings.high_accuracy.tolerance_mm);
+    }
     if (ha.pole_passages > 0) {
       std::printf("  pole passages: %d solved both ways round A = 0, %d kept the other way\n",
                   ha.pole_passages, ha.pole_passages_rerouted);
@@ -87,6 +91,7 @@ int RunSmooth(const Invocation& invocation) {
   SmoothingSettings settings;
   settings.mode = FLAGS_mode == "spline" ? SmoothingMode::kSpline : SmoothingMode::kHighAccuracy;
   settings.schedule_feed = FLAGS_schedule_feed;
+  settings.accept_over_tolerance = FLAGS_accept_over_tolerance;
   settings.resample_step_mm = FLAGS_resample_step_mm;
   settings.feed.default_feed_mm_per_min = FLAGS_feed;
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);

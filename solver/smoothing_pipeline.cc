@@ -1,6 +1,7 @@
 #include "solver/smoothing_pipeline.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include <glog/logging.h>
 
@@ -17,6 +18,35 @@ Status WithinTravel(const Machine& machine, const ToolPath& path) {
   if (s.ok()) s = machine.CheckTravel(path, joints);
   return s;
 }
+
+// The stated tolerance is a promise about what the smoother does to the
+// path, judged on the exact swept envelope (not the solver's sample points):
+// no point of the surface may end up farther from the cutter than the
+// tolerance unless the input was farther still there (at poses the smoother
+// must hold, such as the targets of rapids, the input's error stands).
+Status WithinTolerance(const DeviationReport& in, const DeviationReport& out,
+                       double tolerance_mm) {
+  CHECK_EQ(in.deviation_mm.size(), out.deviation_mm.size());
+  size_t worst = out.deviation_mm.size();
+  for (size_t k = 0; k < out.deviation_mm.size(); ++k) {
+    const double d = std::abs(out.deviation_mm[k]);
+    if (d <= tolerance_mm || d <= std::abs(in.deviation_mm[k])) continue;
+    if (worst == out.deviation_mm.size() || d > std::abs(out.deviation_mm[worst])) worst = k;
+  }
+  if (worst == out.deviation_mm.size()) return Status::Ok();
+  const size_t nv = out.v.size();
+  std::ostringstream err;
+  err << "the best path found is " << std::abs(out.deviation_mm[worst]) << " mm "
+      << (out.deviation_mm[worst] < 0 ? "into" : "short of") << " the surface at (u "
+      << out.u[worst / nv] << ", v " << out.v[worst % nv] << "), where the input was "
+      << std::abs(in.deviation_mm[worst]) << " mm: beyond the tolerance of " << tolerance_mm
+      << " mm";
+  return Status::Error(err.str());
+}
+
+// How many times the solve's tolerance unit may be halved to bring the
+// exact swept envelope within the stated tolerance.
+constexpr int kToleranceTightenings = 2;
 
 Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure* failure) {
   *failure = kind;
@@ -59,41 +89,73 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
                         &spline_path, &result->spline);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+
+  // Resamples result->output if asked, evaluates it and holds it to the
+  // machine's travel.
+  auto finish_output = [&]() {
+    if (settings.resample_step_mm > 0) {
+      stage("resampling");
+      ResampleOptions resample;
+      resample.step_mm = settings.resample_step_mm;
+      Status r = ResamplePath(result->output, *job.machine, resample, &result->output);
+      if (!r.ok()) return Fail(SmoothingFailure::kBadInput, "resampling: " + r.message(), failure);
+    }
+    Status r = evaluate("the output", result->output, &result->output_at_input_feed);
+    if (r.ok()) r = WithinTravel(*job.machine, result->output);
+    if (!r.ok()) {
+      return Fail(SmoothingFailure::kSolver,
+                  "the smoothed path does not fit the machine (" + r.message() + ")", failure);
+    }
+    return Status::Ok();
+  };
   if (!high_accuracy) {
     result->output = std::move(spline_path);
+    s = finish_output();
+    if (!s.ok()) return s;
   } else {
     // Without a surface the band around the program is the only measure of
     // accuracy, and the input is the one start known to lie inside it.
     const ToolPath& guess = job.surface != nullptr ? spline_path : *job.input;
     s = evaluate("the initial guess", guess, &result->initial_guess_metrics);
-    const SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
-    if (s.ok()) stage("high_accuracy solve");
-    if (s.ok()) s = SmoothBothWaysRoundPoles(inputs, settings.high_accuracy, &result->output,
-                                             &result->high_accuracy);
     if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
-    if (!result->high_accuracy.converged) {
-      return Fail(SmoothingFailure::kSolver, "Ceres failed (" + result->high_accuracy.message + ")",
-                  failure);
+    const SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
+    // The tolerance is also the unit the solve measures deviation in; where
+    // the exact swept envelope still leaves it, the solve runs again with
+    // that unit halved, which weighs the surface more against smoothness.
+    HighAccuracyOptions options = settings.high_accuracy;
+    const bool held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
+    for (int round = 0;; ++round) {
+      stage(round == 0 ? "high_accuracy solve"
+                       : "high_accuracy solve, tolerance unit tightened to " +
+                             std::to_string(options.tolerance_mm) + " mm");
+      s = SmoothBothWaysRoundPoles(inputs, options, &result->output, &result->high_accuracy);
+      if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+      if (!result->high_accuracy.converged) {
+        return Fail(SmoothingFailure::kSolver,
+                    "Ceres failed (" + result->high_accuracy.message + ")", failure);
+      }
+      s = finish_output();
+      if (!s.ok()) return s;
+      if (IsWorseThan(result->output_at_input_feed, result->initial_guess_metrics)) {
+        return Fail(SmoothingFailure::kSolver,
+                    "the optimised path is worse than its spline starting point on deviation "
+                    "and limits (try other weights)",
+                    failure);
+      }
+      result->solve_tolerance_mm = options.tolerance_mm;
+      if (!held_to_tolerance) break;
+      s = WithinTolerance(*result->input_metrics.deviation,
+                          *result->output_at_input_feed.deviation,
+                          settings.high_accuracy.tolerance_mm);
+      if (s.ok()) break;
+      if (round == kToleranceTightenings) {
+        return Fail(SmoothingFailure::kSolver,
+                    s.message() + ", with the solve's unit tightened to " +
+                        std::to_string(options.tolerance_mm) + " mm",
+                    failure);
+      }
+      options.tolerance_mm *= 0.5;
     }
-  }
-  if (settings.resample_step_mm > 0) {
-    stage("resampling");
-    ResampleOptions resample;
-    resample.step_mm = settings.resample_step_mm;
-    s = ResamplePath(result->output, *job.machine, resample, &result->output);
-    if (!s.ok()) return Fail(SmoothingFailure::kBadInput, "resampling: " + s.message(), failure);
-  }
-  s = evaluate("the output", result->output, &result->output_at_input_feed);
-  if (s.ok()) s = WithinTravel(*job.machine, result->output);
-  if (!s.ok()) {
-    return Fail(SmoothingFailure::kSolver,
-                "the smoothed path does not fit the machine (" + s.message() + ")", failure);
-  }
-  if (high_accuracy && IsWorseThan(result->output_at_input_feed, result->initial_guess_metrics)) {
-    return Fail(SmoothingFailure::kSolver,
-                "the optimised path is worse than its spline starting point on deviation and "
-                "limits (try other weights)",
-                failure);
   }
   result->output_metrics = result->output_at_input_feed;
   if (!settings.schedule_feed) return Status::Ok();

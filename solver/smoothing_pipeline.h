@@ -2,7 +2,8 @@
 // benchmark: metrics of the input; the spline method (the output in spline
 // mode, the initial guess in high-accuracy mode with a surface; without one
 // the input itself starts the solve); the Ceres solve; resampling; the
-// refusal of a result worse than its start; feed scheduling; metrics of the
+// refusal of a result worse than its start or (with a surface) beyond the
+// tolerance, after tightening the solve; feed scheduling; metrics of the
 // output.
 #ifndef TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
 #define TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
@@ -34,6 +35,12 @@ struct SmoothingSettings {
   // Resample the smoothed path at this arc-length step, mm (0: keep the
   // input's poses). The output metrics are those of the resampled path.
   double resample_step_mm = 0.0;
+  // High accuracy with a surface: a result that leaves any point of the
+  // surface farther from the cutter than high_accuracy.tolerance_mm, and
+  // farther than the input left it, is solved again with the tolerance unit
+  // halved (twice at most) and then refused (kSolver, nothing to write),
+  // unless this is set; then the first solve is reported, not refused.
+  bool accept_over_tolerance = false;
   bool schedule_feed = true;
   FeedScheduleOptions feed;
   DeviationOptions deviation;
@@ -49,6 +56,9 @@ struct SmoothingResult {
   PathMetrics initial_guess_metrics;  // high-accuracy mode only
   PathMetrics output_at_input_feed;   // before feed scheduling
   PathMetrics output_metrics;         // as written
+  // High accuracy: the tolerance unit of the solve that was kept, mm; below
+  // the stated tolerance where that had to be tightened to keep it.
+  double solve_tolerance_mm = 0.0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;
   FeedScheduleReport feed;

@@ -210,7 +210,9 @@ TEST(GcodeCliTest, SmoothedProgramsLoadInLinuxCnc) {
     r = testing::RunCommand(tpopt + " smooth --in=" + dir.File("cam.ngc") + " --out=" + out +
                             " --surface=" + blade + " --machine=" + sim +
                             " --cutter_radius=4 --mode=high_accuracy --quiet --gcode_inverse_time"
-                            " --gcode_style=" + style);
+                            // 60 poses are too coarse to hold 0.01 mm between them; this
+                            // test is about what the interpreter reads.
+                            " --accept_over_tolerance --gcode_style=" + style);
     ASSERT_EQ(r.exit_code, 0) << r.output;
     EXPECT_EQ(Interpret(out).size(), 60u) << style;
   }
