@@ -239,6 +239,7 @@ class GcodeReader {
       j << position_[0], position_[1], position_[2], a, c;
       machine_.ToWorkpiece(j, &pose.p_w_tip, &pose.a_w);
     }
+    pose.programmed = RotaryJoints{a, c};
     pose.feed_mm_per_min = FeedFor(pose);
     path_->poses.push_back(pose);
     return Status::Ok();

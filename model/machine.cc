@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include <glog/logging.h>
@@ -31,9 +32,34 @@ struct PoseAngles {
   double c_rad[2];
 };
 
-std::vector<PoseAngles> CandidateAngles(const ToolPath& path) {
+// Per pose, its programmed joints if a_w is still the axis they give (the
+// pose is as programmed), else nothing: a pose a smoother turned has lost
+// them, whatever the copy of the source pose it started from carries.
+using KeptJoints = std::vector<std::optional<RotaryJoints>>;
+
+KeptJoints ProgrammedJointsKept(const ToolPath& path) {
+  // Far below the 1e-4 deg a program is written to, far above round-off.
+  constexpr double kSameAxis = 1e-9;
+  KeptJoints kept(path.poses.size());
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    const std::optional<RotaryJoints>& p = path.poses[i].programmed;
+    if (p && (AnglesToAxis(p->a_rad, p->c_rad) - path.poses[i].a_w).norm() < kSameAxis) {
+      kept[i] = p;
+    }
+  }
+  return kept;
+}
+
+// Both branches of a pose with kept programmed joints are those joints: the
+// program chose the branch, and it defines C even at A = 0.
+std::vector<PoseAngles> CandidateAngles(const ToolPath& path, const KeptJoints& kept) {
   std::vector<PoseAngles> out(path.poses.size());
   for (size_t i = 0; i < path.poses.size(); ++i) {
+    if (kept[i]) {
+      out[i] = {{kept[i]->a_rad, kept[i]->a_rad},
+                {WrapPi(kept[i]->c_rad), WrapPi(kept[i]->c_rad)}};
+      continue;
+    }
     const Eigen::Vector3d& a = path.poses[i].a_w;
     const bool singular = std::hypot(a.x(), a.y()) < Machine::kSingularSinA;
     const auto angles = AxisToAngles(a);
@@ -51,17 +77,15 @@ std::vector<PoseAngles> CandidateAngles(const ToolPath& path) {
 // branch; at a pass over (or near) the pole the two branches meet, and
 // following the motion continuously means the sign of A changes, which the
 // programme allows when the joint step stays below a quarter turn of C.
-// Undefined C (exactly at the pole) holds the previous C. Returns false when
-// no sequence keeps A inside the travel.
+// Undefined C (exactly at the pole) holds the previous C. C comes out wrapped
+// to (-pi, pi]. Returns false when no sequence keeps A inside the travel.
 bool LeastMotionAngles(const std::vector<PoseAngles>& cand, const AxisLimits& a_lim,
                        BranchAngles* out) {
   const size_t n = cand.size();
   constexpr double kInf = std::numeric_limits<double>::infinity();
   std::vector<std::array<double, 2>> cost(n, {kInf, kInf}), held_c(n);
   std::vector<std::array<int, 2>> from(n, {-1, -1});
-  auto inside = [&](size_t i, int b) {
-    return cand[i].a_rad[b] >= a_lim.min && cand[i].a_rad[b] <= a_lim.max;
-  };
+  auto inside = [&](size_t i, int b) { return a_lim.InTravel(cand[i].a_rad[b]); };
   for (size_t i = 0; i < n; ++i) {
     for (int b = 0; b < 2; ++b) {
       if (!inside(i, b)) continue;
@@ -110,10 +134,35 @@ bool LeastMotionAngles(const std::vector<PoseAngles>& cand, const AxisLimits& a_
     if (!std::isnan(c)) break;
     c = first_c;
   }
-  for (size_t i = 1; i < n; ++i) {
-    out->c_rad[i] = out->c_rad[i - 1] + WrapPi(out->c_rad[i] - out->c_rad[i - 1]);
-  }
   return true;
+}
+
+// Unwraps C (wrapped, one per pose) along the path. Where a program gave
+// the joints its winding is kept, because a different winding is real table
+// motion: a rapid target (or the first pose, which is written as one) with
+// its programmed joints kept takes the programmed C exactly, so a rapid
+// turns the table as the program does (re-winding it, say) and parks where
+// the program parks; a kept pose after a kept pose keeps the program's step
+// (exactly the programmed C when the stretch started at a rapid target).
+// Every other pose takes the whole turn of C nearest to the pose before it,
+// and a kept pose reached that way sets the whole turns its stretch is off
+// the program's winding.
+void UnwrapC(const ToolPath& path, const KeptJoints& kept, std::vector<double>* c_rad) {
+  std::vector<double>& c = *c_rad;
+  double turns_rad = 0.0;  // the running C minus the programmed C
+  for (size_t i = 0; i < c.size(); ++i) {
+    const bool anchor = i == 0 || path.poses[i].rapid;
+    if (kept[i] && (anchor || kept[i - 1])) {
+      if (anchor) turns_rad = 0.0;
+      c[i] = kept[i]->c_rad + turns_rad;
+      continue;
+    }
+    if (i > 0) c[i] = c[i - 1] + WrapPi(c[i] - c[i - 1]);
+    if (kept[i]) {
+      turns_rad = 2.0 * kPi * std::round((c[i] - kept[i]->c_rad) / (2.0 * kPi));
+      c[i] = kept[i]->c_rad + turns_rad;
+    }
+  }
 }
 
 // Index of the first pose outside the A travel on the given branch, or -1.
@@ -205,10 +254,15 @@ Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joi
       return Status::Error(err.str());
     }
   }
-  const std::vector<PoseAngles> cand = CandidateAngles(path);
+  const KeptJoints kept = ProgrammedJointsKept(path);
+  const std::vector<PoseAngles> cand = CandidateAngles(path, kept);
   BranchAngles chosen;
   const bool fits_a = LeastMotionAngles(cand, limits[kA], &chosen);
-  if (!fits_a || !ShiftIntoTravel(limits[kC], &chosen.c_rad)) {
+  if (fits_a) UnwrapC(path, kept, &chosen.c_rad);
+  // Programmed C is absolute: a path that keeps any is not shifted.
+  const bool absolute_c =
+      std::any_of(kept.begin(), kept.end(), [](const auto& k) { return k.has_value(); });
+  if (!fits_a || (!absolute_c && !ShiftIntoTravel(limits[kC], &chosen.c_rad))) {
     std::ostringstream err;
     const int i0 = FirstOutsideTravel(limits[kA], cand, 0);
     const int i1 = FirstOutsideTravel(limits[kA], cand, 1);

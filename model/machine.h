@@ -131,14 +131,24 @@ class Machine {
   // two branches). C is unwrapped continuously and then shifted by whole
   // turns into the C travel if it has one.
   //
+  // Programmed joints (ToolPose::programmed, from G-code input) are kept
+  // where a pose's axis is still the one they give: such a pose has exactly
+  // its programmed A, and C keeps the program's winding. A rapid target (or
+  // the first pose) takes its programmed C exactly, so a path keeps every
+  // rapid as programmed, including C at A = 0 and a rapid that re-winds C;
+  // the poses after it are unwrapped from there, and a kept pose after a
+  // kept pose keeps the program's step of C. A path with programmed joints
+  // is not shifted into the C travel (CheckTravel judges it); a path without
+  // any gets the rule above.
+  //
   // Singularity rule: where sin A < kSingularSinA (the axis within 2e-4 deg
-  // of +Z) C is undefined, so the pose keeps the C of the nearest
-  // non-singular pose before it (or after it, at the start of the path).
-  // This keeps C still through a pass over the pole instead of letting it
-  // spin by noise / sin A. Near (not at) the pole C does swing by roughly
-  // d(theta) / sin A; that is real machine motion and AxisMetrics reports it,
-  // and `warning` (if given) names the pose with the smallest |sin A| when
-  // it lies within 1 deg of the pole.
+  // of +Z) C is undefined, so the pose (unless it keeps programmed joints)
+  // keeps the C of the nearest non-singular pose before it (or after it, at
+  // the start of the path). This keeps C still through a pass over the
+  // pole instead of letting it spin by noise / sin A. Near (not at) the
+  // pole C does swing by roughly d(theta) / sin A; that is real machine
+  // motion and AxisMetrics reports it, and `warning` (if given) names the
+  // pose with the smallest |sin A| when it lies within 1 deg of the pole.
   //
   // Fails (naming the pose index, its source line and the A value) when no
   // branch keeps A inside the travel, or when a pose's axis is not unit.

@@ -12,6 +12,13 @@
 
 namespace tpopt {
 
+// The rotary joints of a machine program, radians: C with its winding
+// (whole turns) and its value at A = 0, neither of which a tool axis holds.
+struct RotaryJoints {
+  double a_rad = 0.0;
+  double c_rad = 0.0;
+};
+
 struct ToolPose {
   // Tool tip (centre of the cutter's end face) in W, mm.
   Eigen::Vector3d p_w_tip = Eigen::Vector3d::Zero();
@@ -23,7 +30,20 @@ struct ToolPose {
   bool rapid = false;
   // 1-based line of the source file the pose came from, 0 if generated.
   int source_line = 0;
+  // A and C as the source program gave them (G-code input), if it did.
+  // Machine::AssignJoints keeps them while a_w is still the axis they give,
+  // so that what a program positions to is written back as programmed.
+  std::optional<RotaryJoints> programmed;
 };
+
+// A pose a method makes between poses of its source (a sample, an inserted
+// transition), starting from a copy of `pose`: it has no source line and
+// was never programmed.
+inline ToolPose Derived(ToolPose pose) {
+  pose.source_line = 0;
+  pose.programmed.reset();
+  return pose;
+}
 
 struct ToolPath {
   std::vector<ToolPose> poses;

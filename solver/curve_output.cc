@@ -41,12 +41,11 @@ std::vector<std::pair<size_t, size_t>> SplitRuns(const ToolPath& in, double corn
 }
 
 ToolPose Between(const ToolPose& from, const ToolPose& to, const Eigen::Vector3d& tip, double t) {
-  ToolPose pose = to;
+  ToolPose pose = Derived(to);
   pose.p_w_tip = tip;
   const Eigen::Vector3d axis = (1.0 - t) * from.a_w + t * to.a_w;
   pose.a_w = axis.norm() > 1e-12 ? axis.normalized() : to.a_w;
   pose.rapid = false;
-  pose.source_line = 0;
   return pose;
 }
 

@@ -41,9 +41,9 @@ Status ResampleRun(const ToolPath& in, const std::vector<JointVector>& joints, s
     if (j == 0) p = in.poses[first];
     if (j == steps) p = in.poses[kept.back()];
     if (j > 0 && j < steps) {
+      p = Derived(p);
       fit.Evaluate(sj, &p);
       p.rapid = false;
-      p.source_line = 0;
     }
     out->poses.push_back(p);
   }

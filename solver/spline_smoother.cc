@@ -192,10 +192,9 @@ Status SmoothRun(const ToolPath& in, const Machine& machine, const RuledSurface*
     const bool insert = options.insert_transitions && i > 0 && zone[i] && zone[i - 1] &&
                         movable(i - 1);
     if (insert) {
-      ToolPose mid = pose_at(i, in.poses[i], 0.5 * (s[i - 1] + s[i]),
+      ToolPose mid = pose_at(i, Derived(in.poses[i]), 0.5 * (s[i - 1] + s[i]),
                              surface ? 0.5 * (u[i - 1] + u[i]) : 0.0);
       if (surface == nullptr) mid.p_w_tip = 0.5 * (in.poses[i - 1].p_w_tip + in.poses[i].p_w_tip);
-      mid.source_line = 0;
       out->poses.push_back(mid);
       ++report->poses_inserted;
     }
