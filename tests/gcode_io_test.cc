@@ -2,7 +2,9 @@
 // Debian's linuxcnc-uspace) where it is installed.
 #include "model/gcode_io.h"
 
+#include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <regex>
 #include <sstream>
 
@@ -50,6 +52,15 @@ std::vector<CanonMove> Interpret(const std::string& file) {
     moves.push_back(move);
   }
   return moves;
+}
+
+// The rapids of `moves` (STRAIGHT_TRAVERSE), in order.
+std::vector<CanonMove> Traverses(const std::vector<CanonMove>& moves) {
+  std::vector<CanonMove> rapids;
+  for (const CanonMove& m : moves) {
+    if (!m.feed) rapids.push_back(m);
+  }
+  return rapids;
 }
 
 class GcodeIoTest : public ::testing::Test {
@@ -162,6 +173,22 @@ TEST_F(GcodeIoTest, BadProgramsNameTheLine) {
   EXPECT_EQ(p.poses[2].p_w_tip.z(), 5.0);
 }
 
+TEST_F(GcodeIoTest, PosesKeepTheirProgrammedRotaryJoints) {
+  // C's winding (350, -400) and C at A = 0 are not in the tool axis.
+  for (GcodeStyle style : {GcodeStyle::kTcp, GcodeStyle::kJoint}) {
+    std::istringstream in("G0 X0 Y0 Z5 A-30 C350\nG1 X1 A0 C-400 F100\n");
+    ToolPath p;
+    std::vector<std::string> w;
+    ASSERT_TRUE(ReadGcodeStream(in, "p.ngc", machine_, style, &p, &w).ok());
+    ASSERT_EQ(p.poses.size(), 2u);
+    ASSERT_TRUE(p.poses[0].programmed && p.poses[1].programmed);
+    EXPECT_NEAR(p.poses[0].programmed->a_rad * 180 / M_PI, -30.0, 1e-12);
+    EXPECT_NEAR(p.poses[0].programmed->c_rad * 180 / M_PI, 350.0, 1e-12);
+    EXPECT_EQ(p.poses[1].programmed->a_rad, 0.0);
+    EXPECT_NEAR(p.poses[1].programmed->c_rad * 180 / M_PI, -400.0, 1e-12);
+  }
+}
+
 TEST_F(GcodeIoTest, ReadsLinuxCncsImpellerProgram) {
   if (!testing::FileExists(kImpellerNgc)) {
     GTEST_SKIP() << kImpellerNgc << " absent (Debian package linuxcnc-uspace)";
@@ -259,6 +286,121 @@ TEST(GcodeCliTest, SurfaceFreeSmoothingOfLinuxCncsImpellerProgram) {
     EXPECT_LE(std::acos(std::min(1.0, a.a_w.dot(b.a_w))) * 180 / M_PI, 0.5 + 1e-3) << i;
   }
   EXPECT_EQ(Interpret(out).size(), n);
+  // Every rapid as programmed, as LinuxCNC reads both programs: the same
+  // X Y Z A C to the written precision, C's winding and C at A = 0 included
+  // (the original's M428/M429 need the sim's M-files, so a copy leaves
+  // them out).
+  const std::string original = dir.File("impeller_without_m428.ngc");
+  std::ofstream copy(original);
+  std::ifstream in(kImpellerNgc);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("M428", 0) != 0 && line.rfind("M429", 0) != 0) copy << line << "\n";
+  }
+  copy.close();
+  const std::vector<CanonMove> programmed = Traverses(Interpret(original));
+  const std::vector<CanonMove> written = Traverses(Interpret(out));
+  ASSERT_EQ(written.size(), programmed.size());
+  EXPECT_EQ(programmed.size(), 186u);
+  for (size_t i = 0; i < written.size(); ++i) {
+    for (int k = 0; k < 5; ++k) {
+      EXPECT_NEAR(written[i].v[k], programmed[i].v[k], 5e-5) << "rapid " << i << " axis " << k;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tpopt
+
+namespace tpopt {
+namespace {
+
+// The G0/G1 moves of a program whose every move line is written in full,
+// "G<0|1> X.. Y.. Z.. A.. C..", as tpopt writes them (read without the
+// reader under test).
+std::vector<CanonMove> FullMoveLines(const std::string& text) {
+  std::vector<CanonMove> moves;
+  std::istringstream lines(text);
+  const std::regex move(R"(^G([01]) X(\S+) Y(\S+) Z(\S+) A(\S+) C(\S+).*$)");
+  std::smatch m;
+  for (std::string line; std::getline(lines, line);) {
+    if (!std::regex_match(line, m, move)) continue;
+    CanonMove c{m[1] == "1", {}};
+    for (int k = 0; k < 5; ++k) c.v[k] = std::stod(m[k + 2]);
+    moves.push_back(c);
+  }
+  return moves;
+}
+
+// A program with what a flank program does with C: a rapid to C 350, a cut
+// that winds C across 360 (to 390) with A wavering, a rapid that re-winds
+// the table by a whole turn (to C 30, the same axis), a cut straight over
+// A = 0 with C programmed there, and the park at A 0 C 0.
+std::string WindingProgram() {
+  std::ostringstream p;
+  p << std::fixed << std::setprecision(3) << "G21 G90 G94\n";
+  auto move = [&](int g, double x, double y, double z, double a, double c) {
+    p << "G" << g << " X" << x << " Y" << y << " Z" << z << " A" << a << " C" << c
+      << (g == 1 ? " F600" : "") << "\n";
+  };
+  move(0, -20, 0, 30, -30, 350);
+  move(0, -20, 0, 5, -30, 350);
+  for (int i = 1; i <= 40; ++i) move(1, -20 + i, 0, 5, -30 - 3 * std::sin(0.7 * i), 350 + i);
+  move(0, 20, 0, 30, -30 - 3 * std::sin(28.0), 390);
+  move(0, -20, 10, 30, -30, 30);
+  move(0, -20, 10, 5, -10, 30);
+  for (int i = 1; i <= 40; ++i) {
+    move(1, -20 + i, 10, 5, -10 + 0.5 * i + (i % 2 == 0 && i != 20 ? 0.3 : 0.0), 30);
+  }
+  move(0, 20, 10, 30, 0, 0);
+  move(0, 0, 0, 40, 0, 0);
+  p << "M2\n";
+  return p.str();
+}
+
+TEST(GcodeCliTest, SmoothingWritesEveryRapidAsProgrammedAndCutsFollowOn) {
+  testing::TempDir dir;
+  const std::string in = dir.File("winding.ngc");
+  {
+    std::ofstream(in) << WindingProgram();
+  }
+  const std::vector<CanonMove> program = FullMoveLines(WindingProgram());
+  ASSERT_EQ(program.size(), 87u);
+  const std::string sim = testing::SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+  const std::string common = testing::TpoptBinary() + " smooth --in=" + in + " --machine=" + sim +
+                             " --cutter_radius=3 --quiet --out=" + dir.File("out.ngc") + " ";
+  const std::string runs[] = {
+      "--flagfile=" + testing::SourcePath("data/presets/surface_free.flags"),
+      "--flagfile=" + testing::SourcePath("data/presets/surface_free.flags") +
+          " --gcode_style=joint",
+      "--mode=spline",
+      "--mode=spline --resample_step_mm=0.4",
+  };
+  for (const std::string& flags : runs) {
+    SCOPED_TRACE(flags);
+    const auto r = testing::RunCommand(common + flags);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const std::vector<CanonMove> written =
+        FullMoveLines(testing::ReadFileText(dir.File("out.ngc")));
+    const bool joint = flags.find("joint") != std::string::npos;
+    size_t k = 0;  // the programmed move the written one belongs to
+    for (size_t i = 0; i < written.size(); ++i) {
+      const CanonMove& w = written[i];
+      if (w.feed) {
+        // A cut goes on from where the rapid left C, not a turn away.
+        ASSERT_GT(i, 0u);
+        EXPECT_LT(std::abs(w.v[4] - written[i - 1].v[4]), 10.0) << "move " << i;
+        continue;
+      }
+      while (k < program.size() && program[k].feed) ++k;
+      ASSERT_LT(k, program.size()) << "more rapids than programmed";
+      for (int axis = joint ? 3 : 0; axis < 5; ++axis) {
+        EXPECT_NEAR(w.v[axis], program[k].v[axis], 5e-5) << "move " << i << " axis " << axis;
+      }
+      ++k;
+    }
+    while (k < program.size() && program[k].feed) ++k;
+    EXPECT_EQ(k, program.size()) << "fewer rapids than programmed";
+  }
 }
 
 }  // namespace

@@ -176,6 +176,100 @@ TEST(AssignJointsTest, RejectsZeroLengthAxis) {
   EXPECT_NE(s.message().find("pose 1"), std::string::npos) << s.message();
 }
 
+// A path as a G-code program gives it: each pose's axis from its
+// programmed (A, C) in degrees, which the pose keeps; `rapid` marks targets.
+struct ProgrammedPose {
+  bool rapid;
+  double a_deg, c_deg;
+};
+
+ToolPath ProgrammedPath(const std::vector<ProgrammedPose>& program) {
+  ToolPath path;
+  for (size_t i = 0; i < program.size(); ++i) {
+    ToolPose pose;
+    pose.p_w_tip = Eigen::Vector3d(i, 0, 0);
+    pose.rapid = program[i].rapid;
+    pose.programmed = RotaryJoints{program[i].a_deg * kDeg, program[i].c_deg * kDeg};
+    pose.a_w = AnglesToAxis(pose.programmed->a_rad, pose.programmed->c_rad);
+    path.poses.push_back(pose);
+  }
+  return path;
+}
+
+void ExpectJointsDeg(const std::vector<JointVector>& j, size_t i, double a_deg, double c_deg) {
+  EXPECT_NEAR(j[i][kA] / kDeg, a_deg, 1e-9) << "pose " << i;
+  EXPECT_NEAR(j[i][kC] / kDeg, c_deg, 1e-9) << "pose " << i;
+}
+
+TEST(AssignJointsTest, KeepsTheProgrammedWindingOfCAcrossRapids) {
+  // A rapid to C 350, a cut winding C across 360 to 380, a rapid that
+  // re-winds the table to C 20 (the same axis), a cut over A = 0 with C
+  // programmed there, and the park at A 0 C 0. Unwrapped continuously, the
+  // re-winding rapid would end at 380 and the park at 360 (or, holding C
+  // at A = 0, at 20): real motion the program does not make.
+  const std::vector<ProgrammedPose> program = {
+      {true, -30, 350}, {false, -30, 360}, {false, -31, 370}, {false, -30, 380},
+      {true, -30, 20},  {false, -10, 20},  {false, 0, 20},    {false, 10, 200},
+      {true, 0, 0}};
+  Machine m;
+  m.limits[kC].min = -90 * kDeg;  // a path with programmed joints is not shifted
+  m.limits[kC].max = 90 * kDeg;
+  std::vector<JointVector> j;
+  ASSERT_TRUE(m.AssignJoints(ProgrammedPath(program), &j).ok());
+  for (size_t i = 0; i < program.size(); ++i) {
+    ExpectJointsDeg(j, i, program[i].a_deg, program[i].c_deg);
+  }
+}
+
+TEST(AssignJointsTest, APoseTurnedAwayFromItsProgramIsUnwrappedFromTheRapid) {
+  // The cut's middle poses were turned by a smoother (their axis is no
+  // longer the programmed one): they follow the rapid target's programmed C
+  // 350, not the candidate in (-180, 180].
+  ToolPath path = ProgrammedPath({{true, -30, 350}, {false, -30, 355}, {false, -30, 365},
+                                  {false, -30, 370}, {true, 0, 0}});
+  path.poses[1].a_w = AnglesToAxis(-30.5 * kDeg, 354 * kDeg);
+  path.poses[2].a_w = AnglesToAxis(-30.5 * kDeg, 366 * kDeg);
+  Machine m;
+  std::vector<JointVector> j;
+  ASSERT_TRUE(m.AssignJoints(path, &j).ok());
+  ExpectJointsDeg(j, 0, -30, 350);
+  ExpectJointsDeg(j, 1, -30.5, 354);
+  ExpectJointsDeg(j, 2, -30.5, 366);
+  ExpectJointsDeg(j, 3, -30, 370);
+  ExpectJointsDeg(j, 4, 0, 0);
+}
+
+TEST(AssignJointsTest, AStretchThatLeftTheProgramRejoinsItByTheNearestTurn) {
+  // Turned poses 1-2 take C the other way round (-170 is reached as 190),
+  // so the program's own poses after them are a whole turn off its winding:
+  // they keep the program's steps from the nearest turn rather than spin
+  // the table back within a cut; the rapid that follows is as programmed.
+  ToolPath path = ProgrammedPath({{true, -30, 0}, {false, -30, 90}, {false, -30, 170},
+                                  {false, -30, -160}, {false, -30, -150}, {true, -30, 10}});
+  path.poses[1].a_w = AnglesToAxis(-30 * kDeg, 100 * kDeg);
+  path.poses[2].a_w = AnglesToAxis(-30 * kDeg, -170 * kDeg);
+  Machine m;
+  std::vector<JointVector> j;
+  ASSERT_TRUE(m.AssignJoints(path, &j).ok());
+  ExpectJointsDeg(j, 2, -30, 190);
+  ExpectJointsDeg(j, 3, -30, 200);
+  ExpectJointsDeg(j, 4, -30, 210);
+  ExpectJointsDeg(j, 5, -30, 10);
+}
+
+TEST(AssignJointsTest, AProgramOnThePositiveBranchKeepsIt) {
+  // Least motion alone could take either branch at A = +-20; the program
+  // chose +20, and the free pose between follows it.
+  ToolPath path = ProgrammedPath({{true, 20, 40}, {false, 20, 45}, {false, 20, 50}});
+  path.poses[1].a_w = AnglesToAxis(21 * kDeg, 45 * kDeg);
+  Machine m;
+  std::vector<JointVector> j;
+  ASSERT_TRUE(m.AssignJoints(path, &j).ok());
+  ExpectJointsDeg(j, 0, 20, 40);
+  ExpectJointsDeg(j, 1, 21, 45);
+  ExpectJointsDeg(j, 2, 20, 50);
+}
+
 TEST(CheckTravelTest, NamesThePoseTheAxisTheValueAndTheTravel) {
   Machine m;
   m.limits[kX].min = -10.0;
