@@ -1,5 +1,6 @@
 #include "model/machine.h"
 
+#include <array>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -196,9 +197,16 @@ ToolPath ProgrammedPath(const std::vector<ProgrammedPose>& program) {
   return path;
 }
 
-void ExpectJointsDeg(const std::vector<JointVector>& j, size_t i, double a_deg, double c_deg) {
-  EXPECT_NEAR(j[i][kA] / kDeg, a_deg, 1e-9) << "pose " << i;
-  EXPECT_NEAR(j[i][kC] / kDeg, c_deg, 1e-9) << "pose " << i;
+// Assigns the joints of `path` on `m` and expects each pose's (A, C), deg.
+void ExpectJointsDeg(const Machine& m, const ToolPath& path,
+                     const std::vector<std::array<double, 2>>& ac_deg) {
+  std::vector<JointVector> j;
+  ASSERT_TRUE(m.AssignJoints(path, &j).ok());
+  ASSERT_EQ(j.size(), ac_deg.size());
+  for (size_t i = 0; i < j.size(); ++i) {
+    EXPECT_NEAR(j[i][kA] / kDeg, ac_deg[i][0], 1e-9) << "pose " << i;
+    EXPECT_NEAR(j[i][kC] / kDeg, ac_deg[i][1], 1e-9) << "pose " << i;
+  }
 }
 
 TEST(AssignJointsTest, KeepsTheProgrammedWindingOfCAcrossRapids) {
@@ -214,11 +222,9 @@ TEST(AssignJointsTest, KeepsTheProgrammedWindingOfCAcrossRapids) {
   Machine m;
   m.limits[kC].min = -90 * kDeg;  // a path with programmed joints is not shifted
   m.limits[kC].max = 90 * kDeg;
-  std::vector<JointVector> j;
-  ASSERT_TRUE(m.AssignJoints(ProgrammedPath(program), &j).ok());
-  for (size_t i = 0; i < program.size(); ++i) {
-    ExpectJointsDeg(j, i, program[i].a_deg, program[i].c_deg);
-  }
+  std::vector<std::array<double, 2>> as_programmed;
+  for (const ProgrammedPose& p : program) as_programmed.push_back({p.a_deg, p.c_deg});
+  ExpectJointsDeg(m, ProgrammedPath(program), as_programmed);
 }
 
 TEST(AssignJointsTest, APoseTurnedAwayFromItsProgramIsUnwrappedFromTheRapid) {
@@ -229,14 +235,7 @@ TEST(AssignJointsTest, APoseTurnedAwayFromItsProgramIsUnwrappedFromTheRapid) {
                                   {false, -30, 370}, {true, 0, 0}});
   path.poses[1].a_w = AnglesToAxis(-30.5 * kDeg, 354 * kDeg);
   path.poses[2].a_w = AnglesToAxis(-30.5 * kDeg, 366 * kDeg);
-  Machine m;
-  std::vector<JointVector> j;
-  ASSERT_TRUE(m.AssignJoints(path, &j).ok());
-  ExpectJointsDeg(j, 0, -30, 350);
-  ExpectJointsDeg(j, 1, -30.5, 354);
-  ExpectJointsDeg(j, 2, -30.5, 366);
-  ExpectJointsDeg(j, 3, -30, 370);
-  ExpectJointsDeg(j, 4, 0, 0);
+  ExpectJointsDeg(Machine(), path, {{-30, 350}, {-30.5, 354}, {-30.5, 366}, {-30, 370}, {0, 0}});
 }
 
 TEST(AssignJointsTest, AStretchThatLeftTheProgramRejoinsItByTheNearestTurn) {
@@ -248,13 +247,8 @@ TEST(AssignJointsTest, AStretchThatLeftTheProgramRejoinsItByTheNearestTurn) {
                                   {false, -30, -160}, {false, -30, -150}, {true, -30, 10}});
   path.poses[1].a_w = AnglesToAxis(-30 * kDeg, 100 * kDeg);
   path.poses[2].a_w = AnglesToAxis(-30 * kDeg, -170 * kDeg);
-  Machine m;
-  std::vector<JointVector> j;
-  ASSERT_TRUE(m.AssignJoints(path, &j).ok());
-  ExpectJointsDeg(j, 2, -30, 190);
-  ExpectJointsDeg(j, 3, -30, 200);
-  ExpectJointsDeg(j, 4, -30, 210);
-  ExpectJointsDeg(j, 5, -30, 10);
+  ExpectJointsDeg(Machine(), path,
+                  {{-30, 0}, {-30, 100}, {-30, 190}, {-30, 200}, {-30, 210}, {-30, 10}});
 }
 
 TEST(AssignJointsTest, AProgramOnThePositiveBranchKeepsIt) {
@@ -262,12 +256,7 @@ TEST(AssignJointsTest, AProgramOnThePositiveBranchKeepsIt) {
   // chose +20, and the free pose between follows it.
   ToolPath path = ProgrammedPath({{true, 20, 40}, {false, 20, 45}, {false, 20, 50}});
   path.poses[1].a_w = AnglesToAxis(21 * kDeg, 45 * kDeg);
-  Machine m;
-  std::vector<JointVector> j;
-  ASSERT_TRUE(m.AssignJoints(path, &j).ok());
-  ExpectJointsDeg(j, 0, 20, 40);
-  ExpectJointsDeg(j, 1, 21, 45);
-  ExpectJointsDeg(j, 2, 20, 50);
+  ExpectJointsDeg(Machine(), path, {{20, 40}, {21, 45}, {20, 50}});
 }
 
 TEST(CheckTravelTest, NamesThePoseTheAxisTheValueAndTheTravel) {
