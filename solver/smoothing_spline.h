@@ -18,6 +18,8 @@
 
 namespace tpopt {
 
+class ReinschSystem;
+
 class SmoothingSpline {
  public:
   // Fits. Preconditions checked (error names the index and value): at
@@ -43,10 +45,10 @@ class SmoothingSpline {
   double smoothing() const { return smoothing_; }
 
  private:
-  struct Scratch;
-  static Status FitWithScratch(const std::vector<double>& s, const std::vector<double>& y,
-                               const std::vector<double>& weights, double smoothing,
-                               Scratch* scratch, SmoothingSpline* out);
+  // Takes the fit of `system` (on abscissae s) for lambda, with the second
+  // derivatives `interior_gamma` at the interior knots.
+  void Assign(const std::vector<double>& s, const ReinschSystem& system, double lambda,
+              double smoothing, const std::vector<double>& interior_gamma);
 
   std::vector<double> s_, f_, gamma_;
   double smoothing_ = 0.0;

@@ -1,0 +1,62 @@
+// The banded system (R + lambda Q^T W^-1 Q) gamma = Q^T y of a Reinsch
+// smoothing spline (see smoothing_spline.h) for fixed abscissae, data and
+// weights, solved for any lambda.
+//
+// SmoothingSpline::FitWithinTolerance solves it for about ten lambdas on the
+// same data, so what does not depend on lambda (1/h, 1/w) is computed once
+// here, and one solve is two sweeps over the data: the forward sweep builds
+// the LDL^T factor and the forward substitution together, the backward sweep
+// finishes gamma and tests the fitted values against the tolerance as it
+// goes, stopping at the first point that leaves it. The factor recurrence is
+// latency-bound, so the extra arithmetic of the test costs nothing; the
+// bands themselves are rebuilt from 1/h and 1/w in registers rather than
+// read from memory, which at a million points is what limits a solve.
+#ifndef TPOPT_SOLVER_REINSCH_SYSTEM_H_
+#define TPOPT_SOLVER_REINSCH_SYSTEM_H_
+
+#include <vector>
+
+namespace tpopt {
+
+class ReinschSystem {
+ public:
+  // s strictly increasing, y finite, weights empty or > 0 and of the same
+  // size, at least 2 points (checked by the caller). Keeps references to
+  // s, y and weights, which must outlive it.
+  ReinschSystem(const std::vector<double>& s, const std::vector<double>& y,
+                const std::vector<double>& weights);
+
+  enum class Outcome { kSingular, kWithin, kOutside };
+
+  // gamma (the second derivatives at the n - 2 interior knots) for lambda.
+  // kOutside as soon as a point of weight >= 1 (every point without
+  // weights) lies further than `tolerance` from its datum; gamma is then
+  // incomplete. kSingular when the system is not positive definite.
+  Outcome Solve(double lambda, double tolerance, std::vector<double>* gamma);
+
+  // Fitted value at point i, y_i - lambda (W^-1 Q gamma)_i, from the
+  // gamma of a complete Solve (for row i only gamma[i-2..i] are read).
+  double Value(int i, double lambda, const std::vector<double>& gamma) const;
+
+ private:
+  // One pivot of the LDL^T factor (L unit lower triangular with two
+  // subdiagonals l1, l2; D diagonal dd) and the forward-substituted rhs z.
+  struct Pivot {
+    double dd, l1, l2, z;
+  };
+
+  void Factor(double lambda);
+  bool Checked(int i) const { return weights_.empty() || weights_[i] >= 1.0; }
+
+  const std::vector<double>& s_;
+  const std::vector<double>& y_;
+  const std::vector<double>& weights_;
+  int m_;                                    // interior knots
+  std::vector<double> inv_h_, w_inv_;        // 1 / (s_i+1 - s_i), 1 / w_i
+  std::vector<Pivot> pivots_;                // the factor of the last Solve
+  bool singular_ = false;
+};
+
+}  // namespace tpopt
+
+#endif  // TPOPT_SOLVER_REINSCH_SYSTEM_H_
