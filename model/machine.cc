@@ -14,6 +14,9 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 
 // Wraps an angle to (-pi, pi].
 double WrapPi(double angle_rad) {
+  // Inside (-pi, pi) the remainder is the angle itself, exactly; most steps
+  // along a path are, and std::remainder is slow.
+  if (std::abs(angle_rad) < kPi) return angle_rad;
   double w = std::remainder(angle_rad, 2.0 * kPi);
   if (w <= -kPi) w += 2.0 * kPi;
   return w;
@@ -31,10 +34,11 @@ struct PoseAngles {
   double c_rad[2];
 };
 
-std::vector<PoseAngles> CandidateAngles(const ToolPath& path) {
-  std::vector<PoseAngles> out(path.poses.size());
-  for (size_t i = 0; i < path.poses.size(); ++i) {
-    const Eigen::Vector3d& a = path.poses[i].a_w;
+// For poses [first, end) of `path`, indexed from `first`.
+std::vector<PoseAngles> CandidateAngles(const ToolPath& path, size_t first, size_t end) {
+  std::vector<PoseAngles> out(end - first);
+  for (size_t i = 0; i < out.size(); ++i) {
+    const Eigen::Vector3d& a = path.poses[first + i].a_w;
     const bool singular = std::hypot(a.x(), a.y()) < Machine::kSingularSinA;
     const auto angles = AxisToAngles(a);
     for (int b = 0; b < 2; ++b) {
@@ -193,19 +197,19 @@ Status Machine::CheckTravel(const ToolPath& path, const std::vector<JointVector>
   return Status::Ok();
 }
 
-Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joints,
-                             std::string* warning) const {
-  CHECK(joints != nullptr);
-  for (size_t i = 0; i < path.poses.size(); ++i) {
+Status Machine::AssignRotaryAngles(const ToolPath& path, size_t first, size_t end,
+                                   std::vector<double>* a_rad, std::vector<double>* c_rad) const {
+  CHECK(first <= end && end <= path.poses.size());
+  for (size_t i = first; i < end; ++i) {
     const double norm = path.poses[i].a_w.norm();
     if (!(std::abs(norm - 1.0) < 1e-6)) {
       std::ostringstream err;
-      err << "pose " << i << " (line " << path.poses[i].source_line
+      err << "pose " << i - first << " (line " << path.poses[i].source_line
           << "): tool axis length " << norm << " is not 1";
       return Status::Error(err.str());
     }
   }
-  const std::vector<PoseAngles> cand = CandidateAngles(path);
+  const std::vector<PoseAngles> cand = CandidateAngles(path, first, end);
   BranchAngles chosen;
   const bool fits_a = LeastMotionAngles(cand, limits[kA], &chosen);
   if (!fits_a || !ShiftIntoTravel(limits[kC], &chosen.c_rad)) {
@@ -219,13 +223,24 @@ Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joi
       // Name the pose where the branch that gets furthest leaves the travel.
       const int b = (i0 < 0 || (i1 >= 0 && i1 > i0)) ? 1 : 0;
       const int i = std::max(b == 0 ? i0 : i1, 0);
-      err << "pose " << i << " (line " << path.poses[i].source_line << "): A = "
+      err << "pose " << i << " (line " << path.poses[first + i].source_line << "): A = "
           << cand[i].a_rad[b] * kRadToDeg << " deg (or " << cand[i].a_rad[1 - b] * kRadToDeg
           << " deg on the other branch) is outside the A travel [" << limits[kA].min * kRadToDeg
           << ", " << limits[kA].max * kRadToDeg << "] deg";
     }
     return Status::Error(err.str());
   }
+  *a_rad = std::move(chosen.a_rad);
+  *c_rad = std::move(chosen.c_rad);
+  return Status::Ok();
+}
+
+Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joints,
+                             std::string* warning) const {
+  CHECK(joints != nullptr);
+  BranchAngles chosen;
+  Status st = AssignRotaryAngles(path, 0, path.poses.size(), &chosen.a_rad, &chosen.c_rad);
+  if (!st.ok()) return st;
   joints->resize(path.poses.size());
   double min_sin_a = 1.0;
   size_t min_sin_index = 0;
