@@ -1,10 +1,10 @@
 // The banded system (R + lambda Q^T W^-1 Q) gamma = Q^T y of a Reinsch
-// smoothing spline (see smoothing_spline.h) for fixed abscissae, data and
-// weights, solved for any lambda.
+// smoothing spline (see smoothing_spline.h) for fixed abscissae and
+// weights, solved for any data y and lambda.
 //
-// SmoothingSpline::FitWithinTolerance solves it for about ten lambdas on the
-// same data, so what does not depend on lambda (1/h, 1/w) is computed once
-// here, and one solve is two sweeps over the data: the forward sweep builds
+// SmoothingSpline::FitWithinTolerance solves it for about ten lambdas for
+// each of several series (the A and C of a path), so what depends on
+// neither (1/h, 1/w, the buffers) is set up once here, and one solve is two sweeps over the data: the forward sweep builds
 // the LDL^T factor and the forward substitution together, the backward sweep
 // finishes gamma and tests the fitted values against the tolerance as it
 // goes, stopping at the first point that leaves it. The factor recurrence is
@@ -20,36 +20,38 @@ namespace tpopt {
 
 class ReinschSystem {
  public:
-  // s strictly increasing, y finite, weights empty or > 0 and of the same
-  // size, at least 2 points (checked by the caller). Keeps references to
-  // s, y and weights, which must outlive it.
-  ReinschSystem(const std::vector<double>& s, const std::vector<double>& y,
-                const std::vector<double>& weights);
+  // s strictly increasing, weights empty or > 0 and of the same size, at
+  // least 2 points (checked by the caller). Keeps references to s and
+  // weights, which must outlive it.
+  ReinschSystem(const std::vector<double>& s, const std::vector<double>& weights);
 
   enum class Outcome { kSingular, kWithin, kOutside };
 
-  // gamma (the second derivatives at the n - 2 interior knots) for lambda.
+  // gamma (the second derivatives at the n - 2 interior knots) for data y
+  // (finite, one per knot) and lambda.
   // kOutside as soon as a point of weight >= 1 (every point without
   // weights) lies further than `tolerance` from its datum; gamma is then
   // incomplete. kSingular when the system is not positive definite.
-  Outcome Solve(double lambda, double tolerance, std::vector<double>* gamma);
+  Outcome Solve(const std::vector<double>& y, double lambda, double tolerance,
+                std::vector<double>* gamma);
 
   // Fitted value at point i, y_i - lambda (W^-1 Q gamma)_i, from the
   // gamma of a complete Solve (for row i only gamma[i-2..i] are read).
-  double Value(int i, double lambda, const std::vector<double>& gamma) const;
+  double Value(const std::vector<double>& y, int i, double lambda,
+               const std::vector<double>& gamma) const;
 
  private:
-  // One pivot of the LDL^T factor (L unit lower triangular with two
-  // subdiagonals l1, l2; D diagonal dd) and the forward-substituted rhs z.
+  // One row of the LDL^T factor (L unit lower triangular with two
+  // subdiagonals l1, l2; D diagonal) with z / D, z the forward-substituted
+  // rhs: all the back substitution reads.
   struct Pivot {
-    double dd, l1, l2, z;
+    double l1, l2, z_over_d;
   };
 
-  void Factor(double lambda);
+  void Factor(const std::vector<double>& y, double lambda);
   bool Checked(int i) const { return weights_.empty() || weights_[i] >= 1.0; }
 
   const std::vector<double>& s_;
-  const std::vector<double>& y_;
   const std::vector<double>& weights_;
   int m_;                                    // interior knots
   std::vector<double> inv_h_, w_inv_;        // 1 / (s_i+1 - s_i), 1 / w_i

@@ -52,14 +52,14 @@ Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<doub
                             SmoothingSpline* out) {
   Status st = CheckInputs(s, y, weights, smoothing);
   if (!st.ok()) return st;
-  ReinschSystem system(s, y, weights);
+  ReinschSystem system(s, weights);
   std::vector<double> gamma;
   const double lambda = Lambda(s, smoothing);
   constexpr double kNoTolerance = std::numeric_limits<double>::infinity();
-  if (system.Solve(lambda, kNoTolerance, &gamma) == ReinschSystem::Outcome::kSingular) {
+  if (system.Solve(y, lambda, kNoTolerance, &gamma) == ReinschSystem::Outcome::kSingular) {
     return SingularError();
   }
-  out->Assign(s, system, lambda, smoothing, gamma);
+  out->Assign(s, system, y, lambda, smoothing, gamma);
   return Status::Ok();
 }
 
@@ -67,21 +67,41 @@ Status SmoothingSpline::FitWithinTolerance(const std::vector<double>& s,
                                            const std::vector<double>& y,
                                            const std::vector<double>& weights, double tolerance,
                                            SmoothingSpline* out) {
-  Status st = CheckInputs(s, y, weights, 0.0);
-  if (!st.ok()) return st;
+  return FitEachWithinTolerance(s, {&y}, weights, tolerance, {out});
+}
+
+Status SmoothingSpline::FitEachWithinTolerance(const std::vector<double>& s,
+                                               const std::vector<const std::vector<double>*>& ys,
+                                               const std::vector<double>& weights,
+                                               double tolerance,
+                                               const std::vector<SmoothingSpline*>& outs) {
+  for (const std::vector<double>* y : ys) {
+    Status st = CheckInputs(s, *y, weights, 0.0);
+    if (!st.ok()) return st;
+  }
+  ReinschSystem system(s, weights);
+  for (size_t k = 0; k < ys.size(); ++k) {
+    Status st = BisectSmoothing(s, *ys[k], weights, tolerance, &system, outs[k]);
+    if (!st.ok()) return st;
+  }
+  return Status::Ok();
+}
+
+Status SmoothingSpline::BisectSmoothing(const std::vector<double>& s, const std::vector<double>& y,
+                                        const std::vector<double>& weights, double tolerance,
+                                        ReinschSystem* system, SmoothingSpline* out) {
   // Bisection on log10(smoothing) in [-6, 8]. 10 halvings of 14 decades
   // find the smoothing to within 3 %; the fit changes by far less than the
   // tolerance over such a step, and every trial costs as much as the rest
   // of the spline method, so finer is waste. Only the best trial's gamma is
   // kept; a failing trial stops at the first point out of tolerance.
-  ReinschSystem system(s, y, weights);
   std::vector<double> best_gamma, trial_gamma;
   double lo = -6.0, hi = 8.0, best_smoothing = 0.0;
   bool found = false;
   for (int iter = 0; iter < 10; ++iter) {
     const double mid = 0.5 * (lo + hi);
     const double smoothing = std::pow(10.0, mid);
-    switch (system.Solve(Lambda(s, smoothing), tolerance, &trial_gamma)) {
+    switch (system->Solve(y, Lambda(s, smoothing), tolerance, &trial_gamma)) {
       case ReinschSystem::Outcome::kSingular:
         return SingularError();
       case ReinschSystem::Outcome::kWithin:
@@ -97,12 +117,12 @@ Status SmoothingSpline::FitWithinTolerance(const std::vector<double>& s,
   }
   // No smoothing kept every point: interpolate (lambda = 0, always within).
   if (!found) return Fit(s, y, weights, 0.0, out);
-  out->Assign(s, system, Lambda(s, best_smoothing), best_smoothing, best_gamma);
+  out->Assign(s, *system, y, Lambda(s, best_smoothing), best_smoothing, best_gamma);
   return Status::Ok();
 }
 
 void SmoothingSpline::Assign(const std::vector<double>& s, const ReinschSystem& system,
-                             double lambda, double smoothing,
+                             const std::vector<double>& y, double lambda, double smoothing,
                              const std::vector<double>& interior_gamma) {
   const size_t n = s.size();
   s_ = s;
@@ -110,7 +130,9 @@ void SmoothingSpline::Assign(const std::vector<double>& s, const ReinschSystem& 
   gamma_.assign(n, 0.0);
   std::copy(interior_gamma.begin(), interior_gamma.end(), gamma_.begin() + 1);
   f_.resize(n);
-  for (size_t i = 0; i < n; ++i) f_[i] = system.Value(static_cast<int>(i), lambda, interior_gamma);
+  for (size_t i = 0; i < n; ++i) {
+    f_[i] = system.Value(y, static_cast<int>(i), lambda, interior_gamma);
+  }
 }
 
 std::array<double, 4> SmoothingSpline::Evaluate(double x) const {

@@ -35,6 +35,14 @@ class SmoothingSpline {
                                    const std::vector<double>& weights, double tolerance,
                                    SmoothingSpline* out);
 
+  // FitWithinTolerance of each series *ys[k] (on the same s and weights)
+  // into *outs[k]. The series share one banded system, its set-up and its
+  // buffers, as the A and C of a path do.
+  static Status FitEachWithinTolerance(const std::vector<double>& s,
+                                       const std::vector<const std::vector<double>*>& ys,
+                                       const std::vector<double>& weights, double tolerance,
+                                       const std::vector<SmoothingSpline*>& outs);
+
   // f, f', f'', f''' at s (clamped to the fitted range: beyond it the
   // natural spline is linear, and so is this).
   std::array<double, 4> Evaluate(double s) const;
@@ -45,10 +53,15 @@ class SmoothingSpline {
   double smoothing() const { return smoothing_; }
 
  private:
-  // Takes the fit of `system` (on abscissae s) for lambda, with the second
-  // derivatives `interior_gamma` at the interior knots.
-  void Assign(const std::vector<double>& s, const ReinschSystem& system, double lambda,
-              double smoothing, const std::vector<double>& interior_gamma);
+  // The tolerance fit of y on `system` (inputs checked).
+  static Status BisectSmoothing(const std::vector<double>& s, const std::vector<double>& y,
+                                const std::vector<double>& weights, double tolerance,
+                                ReinschSystem* system, SmoothingSpline* out);
+  // Takes the fit of y on `system` (on abscissae s) for lambda, with the
+  // second derivatives `interior_gamma` at the interior knots.
+  void Assign(const std::vector<double>& s, const ReinschSystem& system,
+              const std::vector<double>& y, double lambda, double smoothing,
+              const std::vector<double>& interior_gamma);
 
   std::vector<double> s_, f_, gamma_;
   double smoothing_ = 0.0;

@@ -203,8 +203,7 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
   }
   const double tol_rad = options.angle_tolerance_deg / kRadToDeg;
   SmoothingSpline a_fit, c_fit;
-  st = SmoothingSpline::FitWithinTolerance(s, a, weights, tol_rad, &a_fit);
-  if (st.ok()) st = SmoothingSpline::FitWithinTolerance(s, c, weights, tol_rad, &c_fit);
+  st = SmoothingSpline::FitEachWithinTolerance(s, {&a, &c}, weights, tol_rad, {&a_fit, &c_fit});
   if (!st.ok()) return st;
 
   // A pose may move when neither it nor a neighbour is a rapid end.
