@@ -53,18 +53,20 @@ ReinschSystem::Outcome ReinschSystem::Solve(const std::vector<double>& y, double
                                             double tolerance, std::vector<double>* gamma) {
   Factor(y, lambda);
   if (singular_) return Outcome::kSingular;
-  gamma->resize(m_);
+  gamma->resize(m_ + 2);
   std::vector<double>& g = *gamma;
+  g.front() = g.back() = 0.0;
   auto outside = [&](int i) {
     return Checked(i) && std::abs(Value(y, i, lambda, g) - y[i]) > tolerance;
   };
-  // L^T gamma = z / D from the last knot back; once gamma[j] is known,
-  // row j + 2 has all three of its columns and can be tested.
+  // L^T gamma = z / D from the last interior knot back; once knot j + 1
+  // (column j) is known, row j + 2 has all three of its columns and can be
+  // tested.
   double g1 = 0.0, g2 = 0.0;  // gamma[j + 1], gamma[j + 2]
   for (int j = m_ - 1; j >= 0; --j) {
     const Pivot& p = pivots_[j];
     const double gj = p.z_over_d - p.l1 * g1 - p.l2 * g2;
-    g[j] = gj;
+    g[j + 1] = gj;
     g2 = g1;
     g1 = gj;
     if (outside(j + 2)) return Outcome::kOutside;
@@ -74,12 +76,13 @@ ReinschSystem::Outcome ReinschSystem::Solve(const std::vector<double>& y, double
 
 double ReinschSystem::Value(const std::vector<double>& y, int i, double lambda,
                             const std::vector<double>& gamma) const {
-  // Rows take columns i - 2 (its q2), i - 1 (q1) and i (q0), in this order.
+  // Rows take columns i - 2 (its q2), i - 1 (q1) and i (q0), in this order;
+  // column j is knot j + 1.
   const double lw = lambda * w_inv_[i];
   double f = y[i];
-  if (i >= 2) f -= lw * inv_h_[i - 1] * gamma[i - 2];
-  if (i >= 1 && i - 1 < m_) f -= lw * (-inv_h_[i - 1] - inv_h_[i]) * gamma[i - 1];
-  if (i < m_) f -= lw * inv_h_[i] * gamma[i];
+  if (i >= 2) f -= lw * inv_h_[i - 1] * gamma[i - 1];
+  if (i >= 1 && i - 1 < m_) f -= lw * (-inv_h_[i - 1] - inv_h_[i]) * gamma[i];
+  if (i < m_) f -= lw * inv_h_[i] * gamma[i + 1];
   return f;
 }
 

@@ -27,8 +27,8 @@ class ReinschSystem {
 
   enum class Outcome { kSingular, kWithin, kOutside };
 
-  // gamma (the second derivatives at the n - 2 interior knots) for data y
-  // (finite, one per knot) and lambda.
+  // gamma, the second derivatives at all n knots (zero at the two ends,
+  // the natural spline's), for data y (finite, one per knot) and lambda.
   // kOutside as soon as a point of weight >= 1 (every point without
   // weights) lies further than `tolerance` from its datum; gamma is then
   // incomplete. kSingular when the system is not positive definite.
@@ -36,7 +36,7 @@ class ReinschSystem {
                 std::vector<double>* gamma);
 
   // Fitted value at point i, y_i - lambda (W^-1 Q gamma)_i, from the
-  // gamma of a complete Solve (for row i only gamma[i-2..i] are read).
+  // gamma of a complete Solve (for row i only gamma[i-1..i+1] are read).
   double Value(const std::vector<double>& y, int i, double lambda,
                const std::vector<double>& gamma) const;
 

@@ -59,7 +59,7 @@ Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<doub
   if (system.Solve(y, lambda, kNoTolerance, &gamma) == ReinschSystem::Outcome::kSingular) {
     return SingularError();
   }
-  out->Assign(s, system, y, lambda, smoothing, gamma);
+  out->Assign(s, system, y, lambda, smoothing, &gamma);
   return Status::Ok();
 }
 
@@ -117,22 +117,19 @@ Status SmoothingSpline::BisectSmoothing(const std::vector<double>& s, const std:
   }
   // No smoothing kept every point: interpolate (lambda = 0, always within).
   if (!found) return Fit(s, y, weights, 0.0, out);
-  out->Assign(s, *system, y, Lambda(s, best_smoothing), best_smoothing, best_gamma);
+  out->Assign(s, *system, y, Lambda(s, best_smoothing), best_smoothing, &best_gamma);
   return Status::Ok();
 }
 
 void SmoothingSpline::Assign(const std::vector<double>& s, const ReinschSystem& system,
                              const std::vector<double>& y, double lambda, double smoothing,
-                             const std::vector<double>& interior_gamma) {
+                             std::vector<double>* gamma) {
   const size_t n = s.size();
   s_ = s;
   smoothing_ = smoothing;
-  gamma_.assign(n, 0.0);
-  std::copy(interior_gamma.begin(), interior_gamma.end(), gamma_.begin() + 1);
   f_.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    f_[i] = system.Value(y, static_cast<int>(i), lambda, interior_gamma);
-  }
+  for (size_t i = 0; i < n; ++i) f_[i] = system.Value(y, static_cast<int>(i), lambda, *gamma);
+  gamma_ = std::move(*gamma);
 }
 
 std::array<double, 4> SmoothingSpline::Evaluate(double x) const {

@@ -57,11 +57,11 @@ class SmoothingSpline {
   static Status BisectSmoothing(const std::vector<double>& s, const std::vector<double>& y,
                                 const std::vector<double>& weights, double tolerance,
                                 ReinschSystem* system, SmoothingSpline* out);
-  // Takes the fit of y on `system` (on abscissae s) for lambda, with the
-  // second derivatives `interior_gamma` at the interior knots.
+  // Takes the fit of y on `system` (on abscissae s) for lambda, whose
+  // second derivatives at the knots, `gamma`, it takes over.
   void Assign(const std::vector<double>& s, const ReinschSystem& system,
               const std::vector<double>& y, double lambda, double smoothing,
-              const std::vector<double>& interior_gamma);
+              std::vector<double>* gamma);
 
   std::vector<double> s_, f_, gamma_;
   double smoothing_ = 0.0;
