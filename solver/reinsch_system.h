@@ -14,6 +14,8 @@
 #ifndef TPOPT_SOLVER_REINSCH_SYSTEM_H_
 #define TPOPT_SOLVER_REINSCH_SYSTEM_H_
 
+#include <array>
+#include <cstddef>
 #include <vector>
 
 namespace tpopt {
@@ -35,6 +37,14 @@ class ReinschSystem {
   Outcome Solve(const std::vector<double>& y, double lambda, double tolerance,
                 std::vector<double>* gamma);
 
+  // Solve for each series k (*ys[k], lambdas[k], into *gammas[k]), two at a
+  // time in the same sweeps: the factor and back-substitution recurrences
+  // are latency-bound, so a second, independent one in the same loop comes
+  // almost free.
+  std::vector<Outcome> SolveEach(const std::vector<const std::vector<double>*>& ys,
+                                 const std::vector<double>& lambdas, double tolerance,
+                                 const std::vector<std::vector<double>*>& gammas);
+
   // Fitted value at point i, y_i - lambda (W^-1 Q gamma)_i, from the
   // gamma of a complete Solve (for row i only gamma[i-1..i+1] are read).
   double Value(const std::vector<double>& y, int i, double lambda,
@@ -48,15 +58,26 @@ class ReinschSystem {
     double l1, l2, z_over_d;
   };
 
-  void Factor(const std::vector<double>& y, double lambda);
+  // K series at once (K = 1 or 2); pivots_[j * K + k] is row j of series k.
+  template <int K>
+  bool Factor(const std::array<const std::vector<double>*, K>& y,
+              const std::array<double, K>& lambda);
+  template <int K>
+  std::array<Outcome, K> BackSubstitute(const std::array<const std::vector<double>*, K>& y,
+                                        const std::array<double, K>& lambda, double tolerance,
+                                        const std::array<std::vector<double>*, K>& gamma);
+  template <int K>
+  std::array<Outcome, K> SolveGroup(const std::vector<const std::vector<double>*>& ys,
+                                    const std::vector<double>& lambdas, double tolerance,
+                                    const std::vector<std::vector<double>*>& gammas,
+                                    std::size_t first);
   bool Checked(int i) const { return weights_.empty() || weights_[i] >= 1.0; }
 
   const std::vector<double>& s_;
   const std::vector<double>& weights_;
   int m_;                                    // interior knots
   std::vector<double> inv_h_, w_inv_;        // 1 / (s_i+1 - s_i), 1 / w_i
-  std::vector<Pivot> pivots_;                // the factor of the last Solve
-  bool singular_ = false;
+  std::vector<Pivot> pivots_;                // the factor of the last solve
 };
 
 }  // namespace tpopt

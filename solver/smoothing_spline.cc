@@ -80,44 +80,62 @@ Status SmoothingSpline::FitEachWithinTolerance(const std::vector<double>& s,
     if (!st.ok()) return st;
   }
   ReinschSystem system(s, weights);
-  for (size_t k = 0; k < ys.size(); ++k) {
-    Status st = BisectSmoothing(s, *ys[k], weights, tolerance, &system, outs[k]);
-    if (!st.ok()) return st;
-  }
-  return Status::Ok();
+  return BisectSmoothing(s, ys, weights, tolerance, &system, outs);
 }
 
-Status SmoothingSpline::BisectSmoothing(const std::vector<double>& s, const std::vector<double>& y,
+Status SmoothingSpline::BisectSmoothing(const std::vector<double>& s,
+                                        const std::vector<const std::vector<double>*>& ys,
                                         const std::vector<double>& weights, double tolerance,
-                                        ReinschSystem* system, SmoothingSpline* out) {
-  // Bisection on log10(smoothing) in [-6, 8]. 10 halvings of 14 decades
-  // find the smoothing to within 3 %; the fit changes by far less than the
+                                        ReinschSystem* system,
+                                        const std::vector<SmoothingSpline*>& outs) {
+  // Bisection on log10(smoothing) in [-6, 8], every series in step so that
+  // their trials share the system's sweeps. 10 halvings of 14 decades find
+  // the smoothing to within 3 %; the fit changes by far less than the
   // tolerance over such a step, and every trial costs as much as the rest
   // of the spline method, so finer is waste. Only the best trial's gamma is
   // kept; a failing trial stops at the first point out of tolerance.
-  std::vector<double> best_gamma, trial_gamma;
-  double lo = -6.0, hi = 8.0, best_smoothing = 0.0;
-  bool found = false;
+  struct Bisection {
+    double lo = -6.0, hi = 8.0, mid = 0.0, best_smoothing = 0.0;
+    bool found = false;
+    std::vector<double> best_gamma, trial_gamma;
+  };
+  const size_t count = ys.size();
+  std::vector<Bisection> b(count);
+  std::vector<double> lambdas(count);
+  std::vector<std::vector<double>*> trial_gammas(count);
   for (int iter = 0; iter < 10; ++iter) {
-    const double mid = 0.5 * (lo + hi);
-    const double smoothing = std::pow(10.0, mid);
-    switch (system->Solve(y, Lambda(s, smoothing), tolerance, &trial_gamma)) {
-      case ReinschSystem::Outcome::kSingular:
-        return SingularError();
-      case ReinschSystem::Outcome::kWithin:
-        std::swap(best_gamma, trial_gamma);
-        best_smoothing = smoothing;
-        found = true;
-        lo = mid;
-        break;
-      case ReinschSystem::Outcome::kOutside:
-        hi = mid;
-        break;
+    for (size_t k = 0; k < count; ++k) {
+      b[k].mid = 0.5 * (b[k].lo + b[k].hi);
+      lambdas[k] = Lambda(s, std::pow(10.0, b[k].mid));
+      trial_gammas[k] = &b[k].trial_gamma;
+    }
+    const auto outcomes = system->SolveEach(ys, lambdas, tolerance, trial_gammas);
+    for (size_t k = 0; k < count; ++k) {
+      switch (outcomes[k]) {
+        case ReinschSystem::Outcome::kSingular:
+          return SingularError();
+        case ReinschSystem::Outcome::kWithin:
+          std::swap(b[k].best_gamma, b[k].trial_gamma);
+          b[k].best_smoothing = std::pow(10.0, b[k].mid);
+          b[k].found = true;
+          b[k].lo = b[k].mid;
+          break;
+        case ReinschSystem::Outcome::kOutside:
+          b[k].hi = b[k].mid;
+          break;
+      }
     }
   }
-  // No smoothing kept every point: interpolate (lambda = 0, always within).
-  if (!found) return Fit(s, y, weights, 0.0, out);
-  out->Assign(s, *system, y, Lambda(s, best_smoothing), best_smoothing, &best_gamma);
+  for (size_t k = 0; k < count; ++k) {
+    // No smoothing kept every point: interpolate (lambda = 0, always within).
+    if (!b[k].found) {
+      Status st = Fit(s, *ys[k], weights, 0.0, outs[k]);
+      if (!st.ok()) return st;
+      continue;
+    }
+    outs[k]->Assign(s, *system, *ys[k], Lambda(s, b[k].best_smoothing), b[k].best_smoothing,
+                    &b[k].best_gamma);
+  }
   return Status::Ok();
 }
 

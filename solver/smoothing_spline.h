@@ -53,10 +53,11 @@ class SmoothingSpline {
   double smoothing() const { return smoothing_; }
 
  private:
-  // The tolerance fit of y on `system` (inputs checked).
-  static Status BisectSmoothing(const std::vector<double>& s, const std::vector<double>& y,
+  // The tolerance fits of the series ys on `system` (inputs checked).
+  static Status BisectSmoothing(const std::vector<double>& s,
+                                const std::vector<const std::vector<double>*>& ys,
                                 const std::vector<double>& weights, double tolerance,
-                                ReinschSystem* system, SmoothingSpline* out);
+                                ReinschSystem* system, const std::vector<SmoothingSpline*>& outs);
   // Takes the fit of y on `system` (on abscissae s) for lambda, whose
   // second derivatives at the knots, `gamma`, it takes over.
   void Assign(const std::vector<double>& s, const ReinschSystem& system,
