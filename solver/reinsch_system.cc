@@ -41,7 +41,7 @@ std::array<ReinschSystem::Outcome, K> ReinschSystem::SolveGroup(
     lambda[k] = lambdas[first + k];
     gamma[k] = gammas[first + k];
   }
-  if (!Factor<K>(y, lambda)) {
+  if (!Factor<K>(y, lambda, gamma)) {
     std::array<Outcome, K> singular;
     singular.fill(Outcome::kSingular);
     return singular;
@@ -58,7 +58,8 @@ std::array<ReinschSystem::Outcome, K> ReinschSystem::SolveGroup(
 // need no branches. False when a series' system is not positive definite.
 template <int K>
 bool ReinschSystem::Factor(const std::array<const std::vector<double>*, K>& y,
-                           const std::array<double, K>& lambda) {
+                           const std::array<double, K>& lambda,
+                           const std::array<std::vector<double>*, K>& gamma) {
   const std::vector<double>& ih = inv_h_;
   const std::vector<double>& w = w_inv_;
   struct Row {
@@ -66,6 +67,10 @@ bool ReinschSystem::Factor(const std::array<const std::vector<double>*, K>& y,
   };
   std::array<Row, K> p1{}, p2{};  // rows j - 1 and j - 2
   pivots_.resize(static_cast<size_t>(m_) * K);
+  for (int k = 0; k < K; ++k) {
+    gamma[k]->resize(m_ + 2);
+    gamma[k]->front() = gamma[k]->back() = 0.0;
+  }
   for (int j = 0; j < m_; ++j) {
     const double h0 = s_[j + 1] - s_[j], h1 = s_[j + 2] - s_[j + 1];
     const double q0 = ih[j], q1 = -ih[j] - ih[j + 1], q2 = ih[j + 1];
@@ -83,7 +88,8 @@ bool ReinschSystem::Factor(const std::array<const std::vector<double>*, K>& y,
       Row p{diag, 0.0, 0.0, rhs - p1[k].l1 * p1[k].z - p2[k].l2 * p2[k].z};
       if (has_d1) p.l1 = (r1 + lambda[k] * c1 - p1[k].l2 * p1[k].l1 * p1[k].dd) / diag;
       if (has_d2) p.l2 = lambda[k] * q2 * ih[j + 2] * w[j + 2] / diag;
-      pivots_[static_cast<size_t>(j) * K + k] = {p.l1, p.l2, p.z / p.dd};
+      pivots_[static_cast<size_t>(j) * K + k] = {p.l1, p.l2};
+      (*gamma[k])[j + 1] = p.z / p.dd;
       p2[k] = p1[k];
       p1[k] = p;
     }
@@ -91,8 +97,8 @@ bool ReinschSystem::Factor(const std::array<const std::vector<double>*, K>& y,
   return true;
 }
 
-// L^T gamma = z / D from the last interior knot back; once knot j + 1
-// (column j) is known, row j + 2 has all three of its columns and is
+// L^T gamma = z / D, in place, from the last interior knot back; once knot
+// j + 1 (column j) is known, row j + 2 has all three of its columns and is
 // tested. A series found outside keeps being computed (free, beside the
 // other's recurrence) but no longer tested; the sweep stops when all are.
 template <int K>
@@ -109,16 +115,13 @@ std::array<ReinschSystem::Outcome, K> ReinschSystem::BackSubstitute(
       --within;
     }
   };
-  for (int k = 0; k < K; ++k) {
-    gamma[k]->resize(m_ + 2);
-    gamma[k]->front() = gamma[k]->back() = 0.0;
-  }
   std::array<double, K> g1{}, g2{};  // gamma at knots j + 2 and j + 3
   for (int j = m_ - 1; j >= 0 && within > 0; --j) {
     for (int k = 0; k < K; ++k) {
       const Pivot& p = pivots_[static_cast<size_t>(j) * K + k];
-      const double gj = p.z_over_d - p.l1 * g1[k] - p.l2 * g2[k];
-      (*gamma[k])[j + 1] = gj;
+      double& g = (*gamma[k])[j + 1];  // z / D until now
+      const double gj = g - p.l1 * g1[k] - p.l2 * g2[k];
+      g = gj;
       g2[k] = g1[k];
       g1[k] = gj;
     }

@@ -51,17 +51,19 @@ class ReinschSystem {
                const std::vector<double>& gamma) const;
 
  private:
-  // One row of the LDL^T factor (L unit lower triangular with two
-  // subdiagonals l1, l2; D diagonal) with z / D, z the forward-substituted
-  // rhs: all the back substitution reads.
+  // One row of the LDL^T factor: L is unit lower triangular with the two
+  // subdiagonals l1, l2 (D, the diagonal, is only needed as z / D).
   struct Pivot {
-    double l1, l2, z_over_d;
+    double l1, l2;
   };
 
   // K series at once (K = 1 or 2); pivots_[j * K + k] is row j of series k.
+  // z / D, z the forward-substituted rhs, goes where the back substitution
+  // will write gamma (knot j + 1 for row j), which then works in place.
   template <int K>
   bool Factor(const std::array<const std::vector<double>*, K>& y,
-              const std::array<double, K>& lambda);
+              const std::array<double, K>& lambda,
+              const std::array<std::vector<double>*, K>& gamma);
   template <int K>
   std::array<Outcome, K> BackSubstitute(const std::array<const std::vector<double>*, K>& y,
                                         const std::array<double, K>& lambda, double tolerance,
