@@ -36,15 +36,26 @@ struct PoseAngles {
   double c_rad[2];
 };
 
+// Branch 0's (A, C) of a unit axis, C = 0 when `singular` (within
+// kSingularSinA of the pole, where C is undefined).
+struct PolarAngles {
+  double a_rad, c_rad;
+  bool singular;
+};
+
+PolarAngles Polar(const Eigen::Vector3d& axis) {
+  const double sin_a = std::hypot(axis.x(), axis.y());
+  // atan2 keeps full precision near the pole, where acos(a_z) does not.
+  const double a = std::atan2(sin_a, axis.z());
+  const bool singular = sin_a < Machine::kSingularSinA;
+  return {a, singular ? 0.0 : std::atan2(axis.x(), axis.y()), singular};
+}
+
 PoseAngles CandidateAngles(const Eigen::Vector3d& axis) {
-  const bool singular = std::hypot(axis.x(), axis.y()) < Machine::kSingularSinA;
-  const auto angles = AxisToAngles(axis);
-  PoseAngles out;
-  for (int b = 0; b < 2; ++b) {
-    out.a_rad[b] = angles[b].x();
-    out.c_rad[b] = singular ? std::nan("") : angles[b].y();
-  }
-  return out;
+  const PolarAngles p = Polar(axis);
+  const double undefined = std::nan("");
+  return {{p.a_rad, -p.a_rad},
+          {p.singular ? undefined : p.c_rad, p.singular ? undefined : WrapPi(p.c_rad + kPi)}};
 }
 
 // Least-motion (A, C) for poses[0, n) by dynamic programming over the two
@@ -158,12 +169,9 @@ bool ShiftIntoTravel(const AxisLimits& c_limits, std::vector<double>* c_rad) {
 }  // namespace
 
 std::array<Eigen::Vector2d, 2> AxisToAngles(const Eigen::Vector3d& a_w) {
-  const double sin_a = std::hypot(a_w.x(), a_w.y());
-  // atan2 keeps full precision near the pole, where acos(a_z) does not.
-  const double a = std::atan2(sin_a, a_w.z());
-  const bool singular = sin_a < Machine::kSingularSinA;
-  const double c = singular ? 0.0 : std::atan2(a_w.x(), a_w.y());
-  return {Eigen::Vector2d(a, c), Eigen::Vector2d(-a, singular ? 0.0 : WrapPi(c + kPi))};
+  const PolarAngles p = Polar(a_w);
+  return {Eigen::Vector2d(p.a_rad, p.c_rad),
+          Eigen::Vector2d(-p.a_rad, p.singular ? 0.0 : WrapPi(p.c_rad + kPi))};
 }
 
 JointVector Machine::ToJoints(const Eigen::Vector3d& p_w_tip, double a_rad,
