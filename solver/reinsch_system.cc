@@ -134,16 +134,4 @@ std::array<ReinschSystem::Outcome, K> ReinschSystem::BackSubstitute(
   return outcome;
 }
 
-double ReinschSystem::Value(const std::vector<double>& y, int i, double lambda,
-                            const std::vector<double>& gamma) const {
-  // Rows take columns i - 2 (its q2), i - 1 (q1) and i (q0), in this order;
-  // column j is knot j + 1.
-  const double lw = lambda * w_inv_[i];
-  double f = y[i];
-  if (i >= 2) f -= lw * inv_h_[i - 1] * gamma[i - 1];
-  if (i >= 1 && i - 1 < m_) f -= lw * (-inv_h_[i - 1] - inv_h_[i]) * gamma[i];
-  if (i < m_) f -= lw * inv_h_[i] * gamma[i + 1];
-  return f;
-}
-
 }  // namespace tpopt
