@@ -59,7 +59,8 @@ Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<doub
   if (system.Solve(y, lambda, kNoTolerance, &gamma) == ReinschSystem::Outcome::kSingular) {
     return SingularError();
   }
-  out->Assign(s, system, y, lambda, smoothing, &gamma);
+  out->Assign(std::make_shared<const std::vector<double>>(s), system, y, lambda, smoothing,
+              &gamma);
   return Status::Ok();
 }
 
@@ -126,6 +127,7 @@ Status SmoothingSpline::BisectSmoothing(const std::vector<double>& s,
       }
     }
   }
+  const auto shared_s = std::make_shared<const std::vector<double>>(s);
   for (size_t k = 0; k < count; ++k) {
     // No smoothing kept every point: interpolate (lambda = 0, always within).
     if (!b[k].found) {
@@ -133,17 +135,17 @@ Status SmoothingSpline::BisectSmoothing(const std::vector<double>& s,
       if (!st.ok()) return st;
       continue;
     }
-    outs[k]->Assign(s, *system, *ys[k], Lambda(s, b[k].best_smoothing), b[k].best_smoothing,
-                    &b[k].best_gamma);
+    outs[k]->Assign(shared_s, *system, *ys[k], Lambda(s, b[k].best_smoothing),
+                    b[k].best_smoothing, &b[k].best_gamma);
   }
   return Status::Ok();
 }
 
-void SmoothingSpline::Assign(const std::vector<double>& s, const ReinschSystem& system,
-                             const std::vector<double>& y, double lambda, double smoothing,
-                             std::vector<double>* gamma) {
-  const size_t n = s.size();
-  s_ = s;
+void SmoothingSpline::Assign(std::shared_ptr<const std::vector<double>> s,
+                             const ReinschSystem& system, const std::vector<double>& y,
+                             double lambda, double smoothing, std::vector<double>* gamma) {
+  const size_t n = s->size();
+  s_ = std::move(s);
   smoothing_ = smoothing;
   f_.resize(n);
   for (size_t i = 0; i < n; ++i) f_[i] = system.Value(y, static_cast<int>(i), lambda, *gamma);
@@ -151,18 +153,19 @@ void SmoothingSpline::Assign(const std::vector<double>& s, const ReinschSystem& 
 }
 
 std::array<double, 4> SmoothingSpline::Evaluate(double x) const {
-  const int n = static_cast<int>(s_.size());
+  const std::vector<double>& s = *s_;
+  const int n = static_cast<int>(s.size());
   // Interval i with s_i <= x < s_i+1, clamped to the ends.
-  int i = static_cast<int>(std::upper_bound(s_.begin(), s_.end(), x) - s_.begin()) - 1;
+  int i = static_cast<int>(std::upper_bound(s.begin(), s.end(), x) - s.begin()) - 1;
   i = std::clamp(i, 0, n - 2);
-  const double h = s_[i + 1] - s_[i];
-  const double t = x - s_[i];
+  const double h = s[i + 1] - s[i];
+  const double t = x - s[i];
   const double g0 = gamma_[i], g1 = gamma_[i + 1];
   const double b = (f_[i + 1] - f_[i]) / h - h * (2 * g0 + g1) / 6.0;
-  if (x < s_.front() || x > s_.back()) {
+  if (x < s.front() || x > s.back()) {
     // Natural spline: linear beyond the ends (gamma = 0 there).
-    const bool before = x < s_.front();
-    const double x0 = before ? s_.front() : s_.back();
+    const bool before = x < s.front();
+    const double x0 = before ? s.front() : s.back();
     const auto at_end = Evaluate(x0);
     return {at_end[0] + at_end[1] * (x - x0), at_end[1], 0.0, 0.0};
   }

@@ -12,6 +12,7 @@
 #define TPOPT_SOLVER_SMOOTHING_SPLINE_H_
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "model/status.h"
@@ -60,11 +61,13 @@ class SmoothingSpline {
                                 ReinschSystem* system, const std::vector<SmoothingSpline*>& outs);
   // Takes the fit of y on `system` (on abscissae s) for lambda, whose
   // second derivatives at the knots, `gamma`, it takes over.
-  void Assign(const std::vector<double>& s, const ReinschSystem& system,
+  void Assign(std::shared_ptr<const std::vector<double>> s, const ReinschSystem& system,
               const std::vector<double>& y, double lambda, double smoothing,
               std::vector<double>* gamma);
 
-  std::vector<double> s_, f_, gamma_;
+  // The abscissae, one copy shared by the fits of one FitEachWithinTolerance.
+  std::shared_ptr<const std::vector<double>> s_;
+  std::vector<double> f_, gamma_;
   double smoothing_ = 0.0;
 };
 
