@@ -15,63 +15,74 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 
 // Wraps an angle to (-pi, pi].
 double WrapPi(double angle_rad) {
-  double w = std::remainder(angle_rad, 2.0 * kPi);
-  if (w <= -kPi) w += 2.0 * kPi;
+  // Within a turn of zero, which is nearly every call (steps along a path,
+  // C + pi), the remainder is the angle itself or the angle minus a turn,
+  // the latter exact (Sterbenz), so std::remainder, which is slow, is
+  // needed only beyond.
+  constexpr double kTurn = 2.0 * kPi;
+  double w = angle_rad;
+  if (std::abs(angle_rad) >= kTurn || std::isnan(angle_rad)) {
+    w = std::remainder(angle_rad, kTurn);
+  } else if (std::abs(angle_rad) >= kPi) {
+    w = angle_rad - std::copysign(kTurn, angle_rad);
+  }
+  if (w <= -kPi) w += kTurn;
   return w;
 }
 
-// One candidate assignment of (A, C) for every pose of a path.
-struct BranchAngles {
-  std::vector<double> a_rad, c_rad;
-  double motion_rad = 0.0;
-};
-
-// Per-pose (A, C) on the two branches; C is NaN where it is undefined.
+// (A, C) of one pose on the two branches (AxisToAngles); C is NaN where it
+// is undefined. A branch the program did not choose is not allowed.
 struct PoseAngles {
   double a_rad[2];
   double c_rad[2];
+  bool allowed[2] = {true, true};
 };
 
-// Per pose, its programmed joints if a_w is still the axis they give (the
-// pose is as programmed), else nothing: a pose a smoother turned has lost
-// them, whatever the copy of the source pose it started from carries.
-using KeptJoints = std::vector<std::optional<RotaryJoints>>;
-
-KeptJoints ProgrammedJointsKept(const ToolPath& path) {
+// The pose's programmed joints if a_w is still the axis they give (the pose
+// is as programmed), else nothing: a pose a smoother turned has lost them,
+// whatever the copy of the source pose it started from carries.
+std::optional<RotaryJoints> KeptProgrammedJoints(const ToolPose& pose) {
   // Far below the 1e-4 deg a program is written to, far above round-off.
   constexpr double kSameAxis = 1e-9;
-  KeptJoints kept(path.poses.size());
-  for (size_t i = 0; i < path.poses.size(); ++i) {
-    const std::optional<RotaryJoints>& p = path.poses[i].programmed;
-    if (p && (AnglesToAxis(p->a_rad, p->c_rad) - path.poses[i].a_w).norm() < kSameAxis) {
-      kept[i] = p;
-    }
-  }
-  return kept;
+  const std::optional<RotaryJoints>& p = pose.programmed;
+  if (p && (AnglesToAxis(p->a_rad, p->c_rad) - pose.a_w).norm() < kSameAxis) return p;
+  return std::nullopt;
 }
 
-// Both branches of a pose with kept programmed joints are those joints: the
-// program chose the branch, and it defines C even at A = 0.
-std::vector<PoseAngles> CandidateAngles(const ToolPath& path, const KeptJoints& kept) {
-  std::vector<PoseAngles> out(path.poses.size());
-  for (size_t i = 0; i < path.poses.size(); ++i) {
-    if (kept[i]) {
-      out[i] = {{kept[i]->a_rad, kept[i]->a_rad},
-                {WrapPi(kept[i]->c_rad), WrapPi(kept[i]->c_rad)}};
-      continue;
-    }
-    const Eigen::Vector3d& a = path.poses[i].a_w;
-    const bool singular = std::hypot(a.x(), a.y()) < Machine::kSingularSinA;
-    const auto angles = AxisToAngles(a);
-    for (int b = 0; b < 2; ++b) {
-      out[i].a_rad[b] = angles[b].x();
-      out[i].c_rad[b] = singular ? std::nan("") : angles[b].y();
-    }
-  }
-  return out;
+// Branch 0's (A, C) of a unit axis, C = 0 when `singular` (within
+// kSingularSinA of the pole, where C is undefined).
+struct PolarAngles {
+  double a_rad, c_rad;
+  bool singular;
+};
+
+PolarAngles Polar(const Eigen::Vector3d& axis) {
+  const double sin_a = std::hypot(axis.x(), axis.y());
+  // atan2 keeps full precision near the pole, where acos(a_z) does not.
+  const double a = std::atan2(sin_a, axis.z());
+  const bool singular = sin_a < Machine::kSingularSinA;
+  return {a, singular ? 0.0 : std::atan2(axis.x(), axis.y()), singular};
 }
 
-// Least-motion (A, C) for the whole path by dynamic programming over the two
+// A pose that keeps its programmed joints has them on the branch the
+// program chose (both, at A = 0), and its C is defined even at A = 0.
+PoseAngles CandidateAngles(const ToolPose& pose) {
+  if (const std::optional<RotaryJoints> kept = KeptProgrammedJoints(pose)) {
+    const double c = WrapPi(kept->c_rad);
+    const int branch = kept->a_rad < 0 ? 1 : 0;  // branch 1 is (-A, C + pi)
+    PoseAngles out{{branch == 0 ? kept->a_rad : -kept->a_rad,
+                    branch == 0 ? -kept->a_rad : kept->a_rad},
+                   {c, c}};
+    if (kept->a_rad != 0.0) out.allowed[1 - branch] = false;
+    return out;
+  }
+  const PolarAngles p = Polar(pose.a_w);
+  const double undefined = std::nan("");
+  return {{p.a_rad, -p.a_rad},
+          {p.singular ? undefined : p.c_rad, p.singular ? undefined : WrapPi(p.c_rad + kPi)}};
+}
+
+// Least-motion (A, C) for poses[0, n) by dynamic programming over the two
 // branches. Away from the pole, changing branch between neighbours would flip
 // C by half a turn, which is forbidden, so the whole path stays on one
 // branch; at a pass over (or near) the pole the two branches meet, and
@@ -79,25 +90,35 @@ std::vector<PoseAngles> CandidateAngles(const ToolPath& path, const KeptJoints& 
 // programme allows when the joint step stays below a quarter turn of C.
 // Undefined C (exactly at the pole) holds the previous C. C comes out wrapped
 // to (-pi, pi]. Returns false when no sequence keeps A inside the travel.
-bool LeastMotionAngles(const std::vector<PoseAngles>& cand, const AxisLimits& a_lim,
-                       BranchAngles* out) {
-  const size_t n = cand.size();
+//
+// The candidates are made pose by pose as the programme goes, and only what
+// the way back needs is kept per pose (the C held on each branch and the
+// branch it came from): on long paths fresh memory costs more than the
+// arithmetic.
+bool LeastMotionAngles(const ToolPose* poses, size_t n, const AxisLimits& a_lim,
+                       std::vector<double>* a_rad, std::vector<double>* c_rad) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  std::vector<std::array<double, 2>> cost(n, {kInf, kInf}), held_c(n);
-  std::vector<std::array<int, 2>> from(n, {-1, -1});
-  auto inside = [&](size_t i, int b) { return a_lim.InTravel(cand[i].a_rad[b]); };
+  std::vector<std::array<double, 2>> held_c(n);
+  std::vector<std::array<signed char, 2>> from(n, {-1, -1});
+  a_rad->resize(n);  // branch 0's A until the way back
+  c_rad->resize(n);
+  std::array<double, 2> prev_cost{kInf, kInf};
+  PoseAngles prev{};
   for (size_t i = 0; i < n; ++i) {
+    const PoseAngles cand = CandidateAngles(poses[i]);
+    (*a_rad)[i] = cand.a_rad[0];
+    std::array<double, 2> cost{kInf, kInf};
     for (int b = 0; b < 2; ++b) {
-      if (!inside(i, b)) continue;
+      if (!cand.allowed[b] || !a_lim.InTravel(cand.a_rad[b])) continue;
       if (i == 0) {
-        cost[0][b] = 0.0;
-        held_c[0][b] = cand[0].c_rad[b];
+        cost[b] = 0.0;
+        held_c[0][b] = cand.c_rad[b];
         continue;
       }
       for (int p = 0; p < 2; ++p) {
-        if (cost[i - 1][p] == kInf) continue;
+        if (prev_cost[p] == kInf) continue;
         const double c_prev = held_c[i - 1][p];
-        double c_here = cand[i].c_rad[b];
+        double c_here = cand.c_rad[b];
         double dc = 0.0;
         if (std::isnan(c_here)) {
           c_here = c_prev;
@@ -105,72 +126,81 @@ bool LeastMotionAngles(const std::vector<PoseAngles>& cand, const AxisLimits& a_
           dc = std::abs(WrapPi(c_here - c_prev));
         }
         if (p != b && dc > kPi / 2) continue;
-        const double step = cost[i - 1][p] + std::abs(cand[i].a_rad[b] - cand[i - 1].a_rad[p]) + dc;
-        if (step < cost[i][b]) {
-          cost[i][b] = step;
+        const double step = prev_cost[p] + std::abs(cand.a_rad[b] - prev.a_rad[p]) + dc;
+        if (step < cost[b]) {
+          cost[b] = step;
           held_c[i][b] = c_here;
-          from[i][b] = p;
+          from[i][b] = static_cast<signed char>(p);
         }
       }
     }
+    prev_cost = cost;
+    prev = cand;
   }
   if (n == 0) return true;
-  int b = cost[n - 1][0] <= cost[n - 1][1] ? 0 : 1;
-  if (cost[n - 1][b] == kInf) return false;
-  out->motion_rad = cost[n - 1][b];
-  out->a_rad.assign(n, 0.0);
-  out->c_rad.assign(n, 0.0);
+  int b = prev_cost[0] <= prev_cost[1] ? 0 : 1;
+  if (prev_cost[b] == kInf) return false;
   for (size_t i = n; i-- > 0;) {
-    out->a_rad[i] = cand[i].a_rad[b];
-    out->c_rad[i] = held_c[i][b];
+    // Branch 1 is (-A, C + pi); 0 - A rather than -A so that A = 0 (a park
+    // at A 0, say) is written "A0.0000", not "A-0.0000".
+    if (b == 1) (*a_rad)[i] = 0.0 - (*a_rad)[i];
+    (*c_rad)[i] = held_c[i][b];
     if (i > 0) b = from[i][b];
   }
   // Leading poses at the pole take the first defined C; a path entirely at
   // the pole uses C = 0.
-  const auto first = std::find_if(out->c_rad.begin(), out->c_rad.end(),
+  const auto first = std::find_if(c_rad->begin(), c_rad->end(),
                                   [](double c) { return !std::isnan(c); });
-  const double first_c = first == out->c_rad.end() ? 0.0 : *first;
-  for (double& c : out->c_rad) {
+  const double first_c = first == c_rad->end() ? 0.0 : *first;
+  for (double& c : *c_rad) {
     if (!std::isnan(c)) break;
     c = first_c;
   }
   return true;
 }
 
-// Unwraps C (wrapped, one per pose) along the path. Where a program gave
+// Unwraps C (wrapped, one per pose of poses[0, n)) along the path, and
+// returns whether any pose keeps its programmed joints. Where a program gave
 // the joints its winding is kept, because a different winding is real table
-// motion: a rapid target (or the first pose, which is written as one) with
-// its programmed joints kept takes the programmed C exactly, so a rapid
+// motion: a rapid target (or the first pose, which is written as one) that
+// keeps its programmed joints takes the programmed C exactly, so a rapid
 // turns the table as the program does (re-winding it, say) and parks where
 // the program parks; a kept pose after a kept pose keeps the program's step
 // (exactly the programmed C when the stretch started at a rapid target).
 // Every other pose takes the whole turn of C nearest to the pose before it,
 // and a kept pose reached that way sets the whole turns its stretch is off
 // the program's winding.
-void UnwrapC(const ToolPath& path, const KeptJoints& kept, std::vector<double>* c_rad) {
+bool UnwrapC(const ToolPose* poses, size_t n, std::vector<double>* c_rad) {
   std::vector<double>& c = *c_rad;
+  bool any_kept = false, previous_kept = false;
   double turns_rad = 0.0;  // the running C minus the programmed C
-  for (size_t i = 0; i < c.size(); ++i) {
-    const bool anchor = i == 0 || path.poses[i].rapid;
-    if (kept[i] && (anchor || kept[i - 1])) {
+  for (size_t i = 0; i < n; ++i) {
+    const std::optional<RotaryJoints> kept = KeptProgrammedJoints(poses[i]);
+    const bool anchor = i == 0 || poses[i].rapid;
+    if (kept && (anchor || previous_kept)) {
       if (anchor) turns_rad = 0.0;
-      c[i] = kept[i]->c_rad + turns_rad;
-      continue;
+      c[i] = kept->c_rad + turns_rad;
+    } else {
+      if (i > 0) c[i] = c[i - 1] + WrapPi(c[i] - c[i - 1]);
+      if (kept) {
+        turns_rad = 2.0 * kPi * std::round((c[i] - kept->c_rad) / (2.0 * kPi));
+        c[i] = kept->c_rad + turns_rad;
+      }
     }
-    if (i > 0) c[i] = c[i - 1] + WrapPi(c[i] - c[i - 1]);
-    if (kept[i]) {
-      turns_rad = 2.0 * kPi * std::round((c[i] - kept[i]->c_rad) / (2.0 * kPi));
-      c[i] = kept[i]->c_rad + turns_rad;
-    }
+    any_kept = any_kept || kept.has_value();
+    previous_kept = kept.has_value();
   }
+  return any_kept;
 }
 
-// Index of the first pose outside the A travel on the given branch, or -1.
-int FirstOutsideTravel(const AxisLimits& a_limits, const std::vector<PoseAngles>& cand,
-                       int branch) {
-  for (size_t i = 0; i < cand.size(); ++i) {
-    const double a = cand[i].a_rad[branch];
-    if (a < a_limits.min || a > a_limits.max) return static_cast<int>(i);
+// Index of the first of poses[0, n) outside the A travel on the given
+// branch, or -1.
+int FirstOutsideTravel(const AxisLimits& a_limits, const ToolPose* poses, size_t n, int branch) {
+  for (size_t i = 0; i < n; ++i) {
+    const PoseAngles cand = CandidateAngles(poses[i]);
+    if (!cand.allowed[branch] || !a_limits.InTravel(cand.a_rad[branch])) {
+      return static_cast<int>(i);
+    }
   }
   return -1;
 }
@@ -198,12 +228,9 @@ bool ShiftIntoTravel(const AxisLimits& c_limits, std::vector<double>* c_rad) {
 }  // namespace
 
 std::array<Eigen::Vector2d, 2> AxisToAngles(const Eigen::Vector3d& a_w) {
-  const double sin_a = std::hypot(a_w.x(), a_w.y());
-  // atan2 keeps full precision near the pole, where acos(a_z) does not.
-  const double a = std::atan2(sin_a, a_w.z());
-  const bool singular = sin_a < Machine::kSingularSinA;
-  const double c = singular ? 0.0 : std::atan2(a_w.x(), a_w.y());
-  return {Eigen::Vector2d(a, c), Eigen::Vector2d(-a, singular ? 0.0 : WrapPi(c + kPi))};
+  const PolarAngles p = Polar(a_w);
+  return {Eigen::Vector2d(p.a_rad, p.c_rad),
+          Eigen::Vector2d(-p.a_rad, p.singular ? 0.0 : WrapPi(p.c_rad + kPi))};
 }
 
 JointVector Machine::ToJoints(const Eigen::Vector3d& p_w_tip, double a_rad,
@@ -242,30 +269,27 @@ Status Machine::CheckTravel(const ToolPath& path, const std::vector<JointVector>
   return Status::Ok();
 }
 
-Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joints,
-                             std::string* warning) const {
-  CHECK(joints != nullptr);
-  for (size_t i = 0; i < path.poses.size(); ++i) {
+Status Machine::AssignRotaryAngles(const ToolPath& path, size_t first, size_t end,
+                                   std::vector<double>* a_rad, std::vector<double>* c_rad) const {
+  CHECK(first <= end && end <= path.poses.size());
+  for (size_t i = first; i < end; ++i) {
     const double norm = path.poses[i].a_w.norm();
     if (!(std::abs(norm - 1.0) < 1e-6)) {
       std::ostringstream err;
-      err << "pose " << i << " (line " << path.poses[i].source_line
+      err << "pose " << i - first << " (line " << path.poses[i].source_line
           << "): tool axis length " << norm << " is not 1";
       return Status::Error(err.str());
     }
   }
-  const KeptJoints kept = ProgrammedJointsKept(path);
-  const std::vector<PoseAngles> cand = CandidateAngles(path, kept);
-  BranchAngles chosen;
-  const bool fits_a = LeastMotionAngles(cand, limits[kA], &chosen);
-  if (fits_a) UnwrapC(path, kept, &chosen.c_rad);
+  const ToolPose* const poses = path.poses.data() + first;
+  const size_t n = end - first;
+  const bool fits_a = LeastMotionAngles(poses, n, limits[kA], a_rad, c_rad);
   // Programmed C is absolute: a path that keeps any is not shifted.
-  const bool absolute_c =
-      std::any_of(kept.begin(), kept.end(), [](const auto& k) { return k.has_value(); });
-  if (!fits_a || (!absolute_c && !ShiftIntoTravel(limits[kC], &chosen.c_rad))) {
+  const bool absolute_c = fits_a && UnwrapC(poses, n, c_rad);
+  if (!fits_a || (!absolute_c && !ShiftIntoTravel(limits[kC], c_rad))) {
     std::ostringstream err;
-    const int i0 = FirstOutsideTravel(limits[kA], cand, 0);
-    const int i1 = FirstOutsideTravel(limits[kA], cand, 1);
+    const int i0 = FirstOutsideTravel(limits[kA], poses, n, 0);
+    const int i1 = FirstOutsideTravel(limits[kA], poses, n, 1);
     if (fits_a) {
       err << "the C rotation of the path (unwrapped) does not fit the C travel ["
           << limits[kC].min * kRadToDeg << ", " << limits[kC].max * kRadToDeg << "] deg";
@@ -273,19 +297,29 @@ Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joi
       // Name the pose where the branch that gets furthest leaves the travel.
       const int b = (i0 < 0 || (i1 >= 0 && i1 > i0)) ? 1 : 0;
       const int i = std::max(b == 0 ? i0 : i1, 0);
-      err << "pose " << i << " (line " << path.poses[i].source_line << "): A = "
-          << cand[i].a_rad[b] * kRadToDeg << " deg (or " << cand[i].a_rad[1 - b] * kRadToDeg
+      const PoseAngles cand = CandidateAngles(poses[i]);
+      err << "pose " << i << " (line " << poses[i].source_line << "): A = "
+          << cand.a_rad[b] * kRadToDeg << " deg (or " << cand.a_rad[1 - b] * kRadToDeg
           << " deg on the other branch) is outside the A travel [" << limits[kA].min * kRadToDeg
           << ", " << limits[kA].max * kRadToDeg << "] deg";
     }
     return Status::Error(err.str());
   }
+  return Status::Ok();
+}
+
+Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joints,
+                             std::string* warning) const {
+  CHECK(joints != nullptr);
+  std::vector<double> a_rad, c_rad;
+  Status st = AssignRotaryAngles(path, 0, path.poses.size(), &a_rad, &c_rad);
+  if (!st.ok()) return st;
   joints->resize(path.poses.size());
   double min_sin_a = 1.0;
   size_t min_sin_index = 0;
   for (size_t i = 0; i < path.poses.size(); ++i) {
-    (*joints)[i] = ToJoints(path.poses[i].p_w_tip, chosen.a_rad[i], chosen.c_rad[i]);
-    const double sin_a = std::abs(std::sin(chosen.a_rad[i]));
+    (*joints)[i] = ToJoints(path.poses[i].p_w_tip, a_rad[i], c_rad[i]);
+    const double sin_a = std::abs(std::sin(a_rad[i]));
     if (sin_a < min_sin_a) {
       min_sin_a = sin_a;
       min_sin_index = i;

@@ -155,6 +155,12 @@ class Machine {
   Status AssignJoints(const ToolPath& path, std::vector<JointVector>* joints,
                       std::string* warning = nullptr) const;
 
+  // The A and C (radians) that AssignJoints gives the poses [first, end) of
+  // `path` taken as a path of their own (errors count poses from `first`),
+  // without the linear joints, which the spline method does not need.
+  Status AssignRotaryAngles(const ToolPath& path, size_t first, size_t end,
+                            std::vector<double>* a_rad, std::vector<double>* c_rad) const;
+
   // Fails, naming the first pose (index and source line), the axis, its
   // value and the travel, when a joint vector of `joints` (one per pose of
   // `path`, from AssignJoints) lies outside an axis' travel.

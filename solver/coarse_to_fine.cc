@@ -103,10 +103,12 @@ Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOption
   coarse.input = &coarse_input;
   coarse.initial_guess = &coarse_guess;
   VLOG(1) << "high_accuracy: coarse solve over " << stations.size() << " of " << n << " poses";
-  // The refinement finishes the job, so the coarse solve may stop once its
-  // cost settles to 1e-6.
+  // The refinement finishes the job, so the coarse solve may stop once an
+  // iteration changes its cost by less than 1e-4: the last dozen iterations
+  // to 1e-6 moved the cost of the 10,000-pose impeller's coarsest level by
+  // 0.7 % and cost a third of its time.
   HighAccuracyOptions coarse_options = options;
-  coarse_options.function_tolerance = std::max(options.function_tolerance, 1e-6);
+  coarse_options.function_tolerance = std::max(options.function_tolerance, 1e-4);
   ToolPath coarse_solved;
   HighAccuracyReport coarse_report;
   Status s = SolveCoarseToFine(coarse, coarse_options, &coarse_solved, &coarse_report);

@@ -5,7 +5,9 @@
 namespace tpopt {
 namespace {
 
-double PolarAngle(const Eigen::Vector3d& a) { return std::atan2(std::hypot(a.x(), a.y()), a.z()); }
+double PolarAngle(const Eigen::Vector3d& a) {
+  return std::atan2(std::hypot(a.x(), a.y()), a.z());
+}
 
 // The azimuth measured as the machine's C on its A >= 0 branch.
 double Azimuth(const Eigen::Vector3d& a) { return std::atan2(a.x(), a.y()); }
@@ -17,13 +19,15 @@ double UnwrapNear(double angle, double near) {
 
 // Unwrapped azimuths of poses first..last; straight over the pole, where
 // the azimuth is undefined, the previous one carries on.
-std::vector<double> UnwrappedAzimuths(const ToolPath& path, size_t first, size_t last) {
+std::vector<double> UnwrappedAzimuths(const ToolPath& path, size_t first,
+                                      size_t last) {
   std::vector<double> azimuth;
   azimuth.reserve(last - first + 1);
   double previous = Azimuth(path.poses[first].a_w);
   for (size_t i = first; i <= last; ++i) {
     const Eigen::Vector3d& a = path.poses[i].a_w;
-    if (std::hypot(a.x(), a.y()) > 1e-12) previous = UnwrapNear(Azimuth(a), previous);
+    if (std::hypot(a.x(), a.y()) > 1e-12)
+      previous = UnwrapNear(Azimuth(a), previous);
     azimuth.push_back(previous);
   }
   return azimuth;
@@ -31,7 +35,8 @@ std::vector<double> UnwrappedAzimuths(const ToolPath& path, size_t first, size_t
 
 }  // namespace
 
-std::vector<PolePassage> FindPolePassages(const ToolPath& path, double pole_angle_rad) {
+std::vector<PolePassage> FindPolePassages(const ToolPath& path,
+                                          double pole_angle_rad) {
   std::vector<PolePassage> passages;
   const size_t n = path.poses.size();
   size_t i = 0;
@@ -56,7 +61,8 @@ std::vector<PolePassage> FindPolePassages(const ToolPath& path, double pole_angl
 ToolPath RerouteAroundPole(const ToolPath& path, const PolePassage& passage,
                            const Cutter& cutter) {
   ToolPath out = path;
-  const std::vector<double> azimuth = UnwrappedAzimuths(path, passage.first, passage.last);
+  const std::vector<double> azimuth =
+      UnwrappedAzimuths(path, passage.first, passage.last);
   const double sweep = passage.azimuth_sweep_rad;
   const double other_way = sweep - std::copysign(2.0 * M_PI, sweep);
   const double scale = other_way / sweep;
@@ -64,23 +70,28 @@ ToolPath RerouteAroundPole(const ToolPath& path, const PolePassage& passage,
   for (size_t i = passage.first; i <= passage.last; ++i) {
     ToolPose& pose = out.poses[i];
     const double polar = PolarAngle(pose.a_w);
-    const double turned = azimuth.front() + (azimuth[i - passage.first] - azimuth.front()) * scale;
+    const double turned =
+        azimuth.front() +
+        (azimuth[i - passage.first] - azimuth.front()) * scale;
     const Eigen::Vector3d axis(std::sin(polar) * std::sin(turned),
-                               std::sin(polar) * std::cos(turned), std::cos(polar));
+                               std::sin(polar) * std::cos(turned),
+                               std::cos(polar));
     pose.p_w_tip += pivot_height * (pose.a_w - axis);
     pose.a_w = axis;
   }
   return out;
 }
 
-Status SmoothBothWaysRoundPoles(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+Status SmoothBothWaysRoundPoles(const SmoothingInputs& inputs,
+                                const HighAccuracyOptions& options,
                                 ToolPath* out, HighAccuracyReport* report) {
   Status s = SmoothHighAccuracy(inputs, options, out, report);
   if (!s.ok() || !report->converged || inputs.surface == nullptr ||
       options.pole_passage_deg <= 0) {
     return s;
   }
-  const ToolPath& start = inputs.initial_guess != nullptr ? *inputs.initial_guess : *inputs.input;
+  const ToolPath& start =
+      inputs.initial_guess != nullptr ? *inputs.initial_guess : *inputs.input;
   const std::vector<PolePassage> passages =
       FindPolePassages(start, options.pole_passage_deg * M_PI / 180.0);
   ToolPath best_guess = start;
@@ -97,7 +108,8 @@ Status SmoothBothWaysRoundPoles(const SmoothingInputs& inputs, const HighAccurac
     if (!s.ok()) return s;
     iterations += candidate_report.iterations;
     solve_time_s += candidate_report.solve_time_s;
-    if (candidate_report.converged && candidate_report.final_cost < report->final_cost) {
+    if (candidate_report.converged &&
+        candidate_report.final_cost < report->final_cost) {
       *out = std::move(candidate);
       *report = std::move(candidate_report);
       best_guess = std::move(guess);

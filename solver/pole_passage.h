@@ -31,13 +31,14 @@
 namespace tpopt {
 
 struct PolePassage {
-  size_t first = 0;  // first pose of the stretch
-  size_t last = 0;   // last pose (inclusive)
+  size_t first = 0;                // first pose of the stretch
+  size_t last = 0;                 // last pose (inclusive)
   double azimuth_sweep_rad = 0.0;  // net turn of the azimuth, unwrapped
 };
 
 // Passages of `path` in order; stretches do not span rapids.
-std::vector<PolePassage> FindPolePassages(const ToolPath& path, double pole_angle_rad);
+std::vector<PolePassage> FindPolePassages(const ToolPath& path,
+                                          double pole_angle_rad);
 
 // `path` with `passage` taken round the other side of the pole.
 ToolPath RerouteAroundPole(const ToolPath& path, const PolePassage& passage,
@@ -48,7 +49,8 @@ ToolPath RerouteAroundPole(const ToolPath& path, const PolePassage& passage,
 // other way in turn, keeping each change that lowers the final cost. The
 // report is the kept solve's, with the iterations and times of every solve
 // added up and the passage counts filled in.
-Status SmoothBothWaysRoundPoles(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+Status SmoothBothWaysRoundPoles(const SmoothingInputs& inputs,
+                                const HighAccuracyOptions& options,
                                 ToolPath* out, HighAccuracyReport* report);
 
 }  // namespace tpopt

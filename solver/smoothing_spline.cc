@@ -1,7 +1,10 @@
 #include "solver/smoothing_spline.h"
 
+#include "solver/reinsch_system.h"
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -34,112 +37,30 @@ Status CheckInputs(const std::vector<double>& s, const std::vector<double>& y,
   return Status::Ok();
 }
 
-// `v` resized to `size` zeros, keeping its capacity.
-std::vector<double>& Zeroed(size_t size, std::vector<double>* v) {
-  v->assign(size, 0.0);
-  return *v;
+// lambda = p h^3, h the mean knot spacing (see smoothing_spline.h).
+double Lambda(const std::vector<double>& s, double smoothing) {
+  const double mean_h = (s.back() - s.front()) / (static_cast<double>(s.size()) - 1);
+  return smoothing * mean_h * mean_h * mean_h;
 }
 
-}  // namespace
+Status SingularError() { return Status::Error("smoothing spline: the banded system is singular"); }
 
-// The banded system's buffers, kept between the trial fits of
-// FitWithinTolerance: a million-point run would otherwise fault in a
-// hundred megabytes of fresh pages per trial.
-struct SmoothingSpline::Scratch {
-  std::vector<double> h, q0, q1, q2, w_inv, d0, d1, d2, rhs, dd, l1, l2, gamma;
-};
+}  // namespace
 
 Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<double>& y,
                             const std::vector<double>& weights, double smoothing,
                             SmoothingSpline* out) {
-  Scratch scratch;
-  return FitWithScratch(s, y, weights, smoothing, &scratch, out);
-}
-
-Status SmoothingSpline::FitWithScratch(const std::vector<double>& s, const std::vector<double>& y,
-                                       const std::vector<double>& weights, double smoothing,
-                                       Scratch* scratch, SmoothingSpline* out) {
   Status st = CheckInputs(s, y, weights, smoothing);
   if (!st.ok()) return st;
-  const int n = static_cast<int>(s.size());
-  std::vector<double>& h = Zeroed(n - 1, &scratch->h);
-  for (int i = 0; i + 1 < n; ++i) h[i] = s[i + 1] - s[i];
-  const double mean_h = (s.back() - s.front()) / (n - 1);
-  const double lambda = smoothing * mean_h * mean_h * mean_h;
-  out->s_ = s;
-  out->smoothing_ = smoothing;
-  out->gamma_.assign(n, 0.0);
-  if (n == 2) {
-    out->f_ = y;
-    return Status::Ok();
+  ReinschSystem system(s, weights);
+  std::vector<double> gamma;
+  const double lambda = Lambda(s, smoothing);
+  constexpr double kNoTolerance = std::numeric_limits<double>::infinity();
+  if (system.Solve(y, lambda, kNoTolerance, &gamma) == ReinschSystem::Outcome::kSingular) {
+    return SingularError();
   }
-  // Q (n x m) and R (m x m), m = n - 2 interior knots; column j of Q is
-  // knot j + 1 and has three entries, at rows j, j + 1, j + 2. The system
-  // R + lambda Q^T W^-1 Q is symmetric pentadiagonal: assemble its three
-  // diagonals directly and factor it by banded LDL^T, O(n) with no fill.
-  const int m = n - 2;
-  std::vector<double>& q0 = Zeroed(m, &scratch->q0);
-  std::vector<double>& q1 = Zeroed(m, &scratch->q1);
-  std::vector<double>& q2 = Zeroed(m, &scratch->q2);
-  std::vector<double>& w_inv = Zeroed(n, &scratch->w_inv);
-  for (int i = 0; i < n; ++i) w_inv[i] = weights.empty() ? 1.0 : 1.0 / weights[i];
-  for (int j = 0; j < m; ++j) {
-    q0[j] = 1.0 / h[j];
-    q1[j] = -1.0 / h[j] - 1.0 / h[j + 1];
-    q2[j] = 1.0 / h[j + 1];
-  }
-  std::vector<double>& d0 = Zeroed(m, &scratch->d0);
-  std::vector<double>& d1 = Zeroed(m, &scratch->d1);
-  std::vector<double>& d2 = Zeroed(m, &scratch->d2);
-  std::vector<double>& rhs = Zeroed(m, &scratch->rhs);
-  for (int j = 0; j < m; ++j) {
-    d0[j] = (h[j] + h[j + 1]) / 3.0 +
-            lambda * (q0[j] * q0[j] * w_inv[j] + q1[j] * q1[j] * w_inv[j + 1] +
-                      q2[j] * q2[j] * w_inv[j + 2]);
-    if (j + 1 < m) {
-      d1[j] = h[j + 1] / 6.0 +
-              lambda * (q1[j] * q0[j + 1] * w_inv[j + 1] + q2[j] * q1[j + 1] * w_inv[j + 2]);
-    }
-    if (j + 2 < m) d2[j] = lambda * q2[j] * q0[j + 2] * w_inv[j + 2];
-    rhs[j] = q0[j] * y[j] + q1[j] * y[j + 1] + q2[j] * y[j + 2];
-  }
-  // LDL^T of the pentadiagonal matrix: L has unit diagonal and two
-  // subdiagonals l1, l2; D is diagonal.
-  std::vector<double>& dd = Zeroed(m, &scratch->dd);
-  std::vector<double>& l1 = Zeroed(m, &scratch->l1);
-  std::vector<double>& l2 = Zeroed(m, &scratch->l2);
-  for (int j = 0; j < m; ++j) {
-    double diag = d0[j];
-    if (j >= 1) diag -= l1[j - 1] * l1[j - 1] * dd[j - 1];
-    if (j >= 2) diag -= l2[j - 2] * l2[j - 2] * dd[j - 2];
-    if (!(diag > 0)) return Status::Error("smoothing spline: the banded system is singular");
-    dd[j] = diag;
-    if (j + 1 < m) {
-      double off = d1[j];
-      if (j >= 1) off -= l2[j - 1] * l1[j - 1] * dd[j - 1];
-      l1[j] = off / diag;
-    }
-    if (j + 2 < m) l2[j] = d2[j] / diag;
-  }
-  std::vector<double>& gamma = scratch->gamma;
-  gamma = rhs;
-  for (int j = 0; j < m; ++j) {  // L z = rhs
-    if (j >= 1) gamma[j] -= l1[j - 1] * gamma[j - 1];
-    if (j >= 2) gamma[j] -= l2[j - 2] * gamma[j - 2];
-  }
-  for (int j = 0; j < m; ++j) gamma[j] /= dd[j];
-  for (int j = m - 1; j >= 0; --j) {  // L^T x = z / D
-    if (j + 1 < m) gamma[j] -= l1[j] * gamma[j + 1];
-    if (j + 2 < m) gamma[j] -= l2[j] * gamma[j + 2];
-  }
-  // f = y - lambda W^-1 Q gamma.
-  out->f_ = y;
-  for (int j = 0; j < m; ++j) {
-    out->f_[j] -= lambda * w_inv[j] * q0[j] * gamma[j];
-    out->f_[j + 1] -= lambda * w_inv[j + 1] * q1[j] * gamma[j];
-    out->f_[j + 2] -= lambda * w_inv[j + 2] * q2[j] * gamma[j];
-  }
-  for (int j = 0; j < m; ++j) out->gamma_[j + 1] = gamma[j];
+  out->Assign(std::make_shared<const std::vector<double>>(s), system, y, lambda, smoothing,
+              &gamma);
   return Status::Ok();
 }
 
@@ -147,51 +68,104 @@ Status SmoothingSpline::FitWithinTolerance(const std::vector<double>& s,
                                            const std::vector<double>& y,
                                            const std::vector<double>& weights, double tolerance,
                                            SmoothingSpline* out) {
-  auto within = [&](const SmoothingSpline& fit) {
-    for (size_t i = 0; i < y.size(); ++i) {
-      if ((weights.empty() || weights[i] >= 1.0) && std::abs(fit.f_[i] - y[i]) > tolerance) {
-        return false;
+  return FitEachWithinTolerance(s, {&y}, weights, tolerance, {out});
+}
+
+Status SmoothingSpline::FitEachWithinTolerance(const std::vector<double>& s,
+                                               const std::vector<const std::vector<double>*>& ys,
+                                               const std::vector<double>& weights,
+                                               double tolerance,
+                                               const std::vector<SmoothingSpline*>& outs) {
+  for (const std::vector<double>* y : ys) {
+    Status st = CheckInputs(s, *y, weights, 0.0);
+    if (!st.ok()) return st;
+  }
+  ReinschSystem system(s, weights);
+  return BisectSmoothing(s, ys, weights, tolerance, &system, outs);
+}
+
+Status SmoothingSpline::BisectSmoothing(const std::vector<double>& s,
+                                        const std::vector<const std::vector<double>*>& ys,
+                                        const std::vector<double>& weights, double tolerance,
+                                        ReinschSystem* system,
+                                        const std::vector<SmoothingSpline*>& outs) {
+  // Bisection on log10(smoothing) in [-6, 8], every series in step so that
+  // their trials share the system's sweeps. 10 halvings of 14 decades find
+  // the smoothing to within 3 %; the fit changes by far less than the
+  // tolerance over such a step, and every trial costs as much as the rest
+  // of the spline method, so finer is waste. Only the best trial's gamma is
+  // kept; a failing trial stops at the first point out of tolerance.
+  struct Bisection {
+    double lo = -6.0, hi = 8.0, mid = 0.0, best_smoothing = 0.0;
+    bool found = false;
+    std::vector<double> best_gamma, trial_gamma;
+  };
+  const size_t count = ys.size();
+  std::vector<Bisection> b(count);
+  std::vector<double> lambdas(count);
+  std::vector<std::vector<double>*> trial_gammas(count);
+  for (int iter = 0; iter < 10; ++iter) {
+    for (size_t k = 0; k < count; ++k) {
+      b[k].mid = 0.5 * (b[k].lo + b[k].hi);
+      lambdas[k] = Lambda(s, std::pow(10.0, b[k].mid));
+      trial_gammas[k] = &b[k].trial_gamma;
+    }
+    const auto outcomes = system->SolveEach(ys, lambdas, tolerance, trial_gammas);
+    for (size_t k = 0; k < count; ++k) {
+      switch (outcomes[k]) {
+        case ReinschSystem::Outcome::kSingular:
+          return SingularError();
+        case ReinschSystem::Outcome::kWithin:
+          std::swap(b[k].best_gamma, b[k].trial_gamma);
+          b[k].best_smoothing = std::pow(10.0, b[k].mid);
+          b[k].found = true;
+          b[k].lo = b[k].mid;
+          break;
+        case ReinschSystem::Outcome::kOutside:
+          b[k].hi = b[k].mid;
+          break;
       }
     }
-    return true;
-  };
-  // Bisection on log10(smoothing) in [-6, 8].
-  double lo = -6.0, hi = 8.0;
-  Scratch scratch;
-  SmoothingSpline best, trial;
-  Status st = FitWithScratch(s, y, weights, 0.0, &scratch, &best);
-  if (!st.ok()) return st;
-  // 10 halvings of 14 decades find the smoothing to within 3 %; the fit
-  // changes by far less than the tolerance over such a step, and every fit
-  // costs as much as the rest of the spline method, so finer is waste.
-  for (int iter = 0; iter < 10; ++iter) {
-    const double mid = 0.5 * (lo + hi);
-    st = FitWithScratch(s, y, weights, std::pow(10.0, mid), &scratch, &trial);
-    if (!st.ok()) return st;
-    if (within(trial)) {
-      std::swap(best, trial);  // trial keeps the old buffers for the next try
-      lo = mid;
-    } else {
-      hi = mid;
-    }
   }
-  *out = std::move(best);
+  const auto shared_s = std::make_shared<const std::vector<double>>(s);
+  for (size_t k = 0; k < count; ++k) {
+    // No smoothing kept every point: interpolate (lambda = 0, always within).
+    if (!b[k].found) {
+      Status st = Fit(s, *ys[k], weights, 0.0, outs[k]);
+      if (!st.ok()) return st;
+      continue;
+    }
+    outs[k]->Assign(shared_s, *system, *ys[k], Lambda(s, b[k].best_smoothing),
+                    b[k].best_smoothing, &b[k].best_gamma);
+  }
   return Status::Ok();
 }
 
+void SmoothingSpline::Assign(std::shared_ptr<const std::vector<double>> s,
+                             const ReinschSystem& system, const std::vector<double>& y,
+                             double lambda, double smoothing, std::vector<double>* gamma) {
+  const size_t n = s->size();
+  s_ = std::move(s);
+  smoothing_ = smoothing;
+  f_.resize(n);
+  for (size_t i = 0; i < n; ++i) f_[i] = system.Value(y, static_cast<int>(i), lambda, *gamma);
+  gamma_ = std::move(*gamma);
+}
+
 std::array<double, 4> SmoothingSpline::Evaluate(double x) const {
-  const int n = static_cast<int>(s_.size());
+  const std::vector<double>& s = *s_;
+  const int n = static_cast<int>(s.size());
   // Interval i with s_i <= x < s_i+1, clamped to the ends.
-  int i = static_cast<int>(std::upper_bound(s_.begin(), s_.end(), x) - s_.begin()) - 1;
+  int i = static_cast<int>(std::upper_bound(s.begin(), s.end(), x) - s.begin()) - 1;
   i = std::clamp(i, 0, n - 2);
-  const double h = s_[i + 1] - s_[i];
-  const double t = x - s_[i];
+  const double h = s[i + 1] - s[i];
+  const double t = x - s[i];
   const double g0 = gamma_[i], g1 = gamma_[i + 1];
   const double b = (f_[i + 1] - f_[i]) / h - h * (2 * g0 + g1) / 6.0;
-  if (x < s_.front() || x > s_.back()) {
+  if (x < s.front() || x > s.back()) {
     // Natural spline: linear beyond the ends (gamma = 0 there).
-    const bool before = x < s_.front();
-    const double x0 = before ? s_.front() : s_.back();
+    const bool before = x < s.front();
+    const double x0 = before ? s.front() : s.back();
     const auto at_end = Evaluate(x0);
     return {at_end[0] + at_end[1] * (x - x0), at_end[1], 0.0, 0.0};
   }

@@ -12,11 +12,14 @@
 #define TPOPT_SOLVER_SMOOTHING_SPLINE_H_
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "model/status.h"
 
 namespace tpopt {
+
+class ReinschSystem;
 
 class SmoothingSpline {
  public:
@@ -33,6 +36,14 @@ class SmoothingSpline {
                                    const std::vector<double>& weights, double tolerance,
                                    SmoothingSpline* out);
 
+  // FitWithinTolerance of each series *ys[k] (on the same s and weights)
+  // into *outs[k]. The series share one banded system, its set-up and its
+  // buffers, as the A and C of a path do.
+  static Status FitEachWithinTolerance(const std::vector<double>& s,
+                                       const std::vector<const std::vector<double>*>& ys,
+                                       const std::vector<double>& weights, double tolerance,
+                                       const std::vector<SmoothingSpline*>& outs);
+
   // f, f', f'', f''' at s (clamped to the fitted range: beyond it the
   // natural spline is linear, and so is this).
   std::array<double, 4> Evaluate(double s) const;
@@ -43,12 +54,20 @@ class SmoothingSpline {
   double smoothing() const { return smoothing_; }
 
  private:
-  struct Scratch;
-  static Status FitWithScratch(const std::vector<double>& s, const std::vector<double>& y,
-                               const std::vector<double>& weights, double smoothing,
-                               Scratch* scratch, SmoothingSpline* out);
+  // The tolerance fits of the series ys on `system` (inputs checked).
+  static Status BisectSmoothing(const std::vector<double>& s,
+                                const std::vector<const std::vector<double>*>& ys,
+                                const std::vector<double>& weights, double tolerance,
+                                ReinschSystem* system, const std::vector<SmoothingSpline*>& outs);
+  // Takes the fit of y on `system` (on abscissae s) for lambda, whose
+  // second derivatives at the knots, `gamma`, it takes over.
+  void Assign(std::shared_ptr<const std::vector<double>> s, const ReinschSystem& system,
+              const std::vector<double>& y, double lambda, double smoothing,
+              std::vector<double>* gamma);
 
-  std::vector<double> s_, f_, gamma_;
+  // The abscissae, one copy shared by the fits of one FitEachWithinTolerance.
+  std::shared_ptr<const std::vector<double>> s_;
+  std::vector<double> f_, gamma_;
   double smoothing_ = 0.0;
 };
 

@@ -67,22 +67,21 @@ Eigen::Vector3d TangentTip(const RuledSurface& surface, double radius_mm, double
 // Fitted angle with each zone's ends pinned to the untouched poses around
 // it: the fit's offset from the data at the first pose before and after a
 // zone is removed linearly across the zone, so the modified stretch joins
-// its neighbours without a step.
+// its neighbours without a step. Pins are kept per zone, not per pose: a
+// long path has few zones, and per-pose pins were a page-faulting array as
+// large as the path.
 class PinnedFit {
  public:
   PinnedFit(const SmoothingSpline& fit, const std::vector<double>& s,
             const std::vector<double>& y, const std::vector<bool>& zone)
-      : fit_(fit), left_(s.size()), right_(s.size()) {
+      : fit_(fit) {
     const size_t n = s.size();
     for (size_t i = 0; i < n; ++i) {
       if (!zone[i] || (i > 0 && zone[i - 1])) continue;
       size_t end = i;
       while (end + 1 < n && zone[end + 1]) ++end;
       const size_t l = i > 0 ? i - 1 : i, r = end + 1 < n ? end + 1 : end;
-      for (size_t k = i; k <= end; ++k) {
-        left_[k] = {s[l], y[l] - fit(s[l])};
-        right_[k] = {s[r], y[r] - fit(s[r])};
-      }
+      pins_.push_back({i, end, s[l], y[l] - fit(s[l]), s[r], y[r] - fit(s[r])});
       i = end;
     }
   }
@@ -90,15 +89,31 @@ class PinnedFit {
   // Value at arc length s_mm for pose i; outside zones the pins are zero
   // and this is the plain fit.
   double At(size_t i, double s_mm) const {
-    const auto [s_l, d_l] = left_[i];
-    const auto [s_r, d_r] = right_[i];
-    const double t = s_r > s_l ? std::clamp((s_mm - s_l) / (s_r - s_l), 0.0, 1.0) : 0.0;
-    return fit_(s_mm) + d_l + (d_r - d_l) * t;
+    const Pin* pin = ZoneOf(i);
+    if (pin == nullptr) return fit_(s_mm);
+    const double t =
+        pin->s_r > pin->s_l ? std::clamp((s_mm - pin->s_l) / (pin->s_r - pin->s_l), 0.0, 1.0)
+                            : 0.0;
+    return fit_(s_mm) + pin->d_l + (pin->d_r - pin->d_l) * t;
   }
 
  private:
+  // Zone [first, last] and the fit's offsets (s, offset) at its two pins.
+  struct Pin {
+    size_t first, last;
+    double s_l, d_l, s_r, d_r;
+  };
+
+  const Pin* ZoneOf(size_t i) const {
+    const auto after = std::upper_bound(pins_.begin(), pins_.end(), i,
+                                        [](size_t k, const Pin& pin) { return k < pin.first; });
+    if (after == pins_.begin()) return nullptr;
+    const Pin& pin = *(after - 1);
+    return i <= pin.last ? &pin : nullptr;
+  }
+
   const SmoothingSpline& fit_;
-  std::vector<std::pair<double, double>> left_, right_;  // (s, offset) per pose
+  std::vector<Pin> pins_;
 };
 
 }  // namespace
@@ -122,32 +137,36 @@ bool SplineSmootherOptions::IsValid(std::string* why) const {
 
 namespace {
 
-// The method on one cutting run (no rapid after its first pose).
-Status SmoothRun(const ToolPath& in, const Machine& machine, const RuledSurface* surface,
-                 const Cutter& cutter, const SplineSmootherOptions& options, ToolPath* out,
-                 SplineSmootherReport* report) {
-  std::vector<JointVector> joints;
-  Status st = machine.AssignJoints(in, &joints);
-  if (!st.ok()) return st;
-  const size_t n = in.poses.size();
-  if (n < 4) {  // nothing to smooth
-    *out = in;
-    return Status::Ok();
+// What every cutting run of one SmoothWithSplines call shares.
+struct SmoothingJob {
+  const ToolPath& in;
+  const Machine& machine;
+  const RuledSurface* surface;  // may be null
+  const Cutter& cutter;
+  const SplineSmootherOptions& options;
+  std::vector<double> u;  // contact ruling of every pose of `in`; empty without a surface
+};
+
+// Arc length of the tip along poses[0, n), each step at least kMinStepMm.
+std::vector<double> TipArcLength(const ToolPose* poses, size_t n) {
+  std::vector<double> s(n, 0.0);
+  for (size_t i = 1; i < n; ++i) {
+    s[i] = s[i - 1] + std::max(kMinStepMm, (poses[i].p_w_tip - poses[i - 1].p_w_tip).norm());
   }
-  std::vector<double> s(n, 0.0), a(n), c(n);
-  for (size_t i = 0; i < n; ++i) {
-    a[i] = joints[i][kA];
-    c[i] = joints[i][kC];
-    if (i > 0) {
-      s[i] = s[i - 1] + std::max(kMinStepMm, (in.poses[i].p_w_tip - in.poses[i - 1].p_w_tip).norm());
-    }
-  }
+  return s;
+}
+
+// Zones of abrupt rotary acceleration and, with a surface, of fast
+// Gaussian-curvature change (u: the contact rulings), padded.
+std::vector<bool> FindZones(const std::vector<double>& s, const std::vector<double>& a,
+                            const std::vector<double>& c, const RuledSurface* surface,
+                            const double* u, const SplineSmootherOptions& options,
+                            SplineSmootherReport* report) {
+  const size_t n = s.size();
   std::vector<bool> zone(n, false);
   MarkAbove(SecondDerivative(s, a), options.zone_factor, &zone);
   MarkAbove(SecondDerivative(s, c), options.zone_factor, &zone);
-  std::vector<double> u;
   if (surface != nullptr) {
-    u = ProjectPathOntoRail(surface->rail(0), in);
     std::vector<double> dk(n, 0.0);
     for (size_t i = 1; i + 1 < n; ++i) {
       dk[i] = std::abs(surface->GaussianCurvature(u[i + 1], 0.5) -
@@ -157,6 +176,26 @@ Status SmoothRun(const ToolPath& in, const Machine& machine, const RuledSurface*
     MarkAbove(dk, options.zone_factor, &zone);
   }
   report->zones += PadZones(options.zone_padding, &zone);
+  return zone;
+}
+
+// The method on the cutting run [first, end) of job.in (no rapid after its
+// first pose); appends the run's poses to `out`.
+Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<ToolPose>* out,
+                 SplineSmootherReport* report) {
+  const SplineSmootherOptions& options = job.options;
+  std::vector<double> a, c;
+  Status st = job.machine.AssignRotaryAngles(job.in, first, end, &a, &c);
+  if (!st.ok()) return st;
+  const ToolPose* const poses = job.in.poses.data() + first;
+  const size_t n = end - first;
+  if (n < 4) {  // nothing to smooth
+    out->insert(out->end(), poses, poses + n);
+    return Status::Ok();
+  }
+  const double* const u = job.surface != nullptr ? job.u.data() + first : nullptr;
+  const std::vector<double> s = TipArcLength(poses, n);
+  const std::vector<bool> zone = FindZones(s, a, c, job.surface, u, options, report);
   std::vector<double> weights(n, 1.0);
   for (size_t i = 0; i < n; ++i) {
     report->poses_in_zones += zone[i];
@@ -164,26 +203,25 @@ Status SmoothRun(const ToolPath& in, const Machine& machine, const RuledSurface*
   }
   const double tol_rad = options.angle_tolerance_deg / kRadToDeg;
   SmoothingSpline a_fit, c_fit;
-  st = SmoothingSpline::FitWithinTolerance(s, a, weights, tol_rad, &a_fit);
-  if (st.ok()) st = SmoothingSpline::FitWithinTolerance(s, c, weights, tol_rad, &c_fit);
+  st = SmoothingSpline::FitEachWithinTolerance(s, {&a, &c}, weights, tol_rad, {&a_fit, &c_fit});
   if (!st.ok()) return st;
 
   // A pose may move when neither it nor a neighbour is a rapid end.
   auto movable = [&](size_t i) {
-    return !in.poses[i].rapid && (i + 1 >= n || !in.poses[i + 1].rapid);
+    return !poses[i].rapid && (i + 1 >= n || !poses[i + 1].rapid);
   };
   const PinnedFit a_pinned(a_fit, s, a, zone), c_pinned(c_fit, s, c, zone);
   auto pose_at = [&](size_t i, const ToolPose& base, double s_mm, double u_contact) {
     ToolPose p = base;
     p.a_w = AnglesToAxis(a_pinned.At(i, s_mm), c_pinned.At(i, s_mm));
-    if (surface != nullptr) p.p_w_tip = TangentTip(*surface, cutter.radius_mm, u_contact, p.a_w);
+    if (job.surface != nullptr) {
+      p.p_w_tip = TangentTip(*job.surface, job.cutter.radius_mm, u_contact, p.a_w);
+    }
     return p;
   };
-  *out = WithoutPoses(in);
-  out->poses.reserve(options.insert_transitions ? 2 * n : n);
   for (size_t i = 0; i < n; ++i) {
     if (!movable(i) || (!zone[i] && !options.smooth_outside_zones)) {
-      out->poses.push_back(in.poses[i]);
+      out->push_back(poses[i]);
       continue;
     }
     report->max_angle_change_deg = std::max(
@@ -192,13 +230,13 @@ Status SmoothRun(const ToolPath& in, const Machine& machine, const RuledSurface*
     const bool insert = options.insert_transitions && i > 0 && zone[i] && zone[i - 1] &&
                         movable(i - 1);
     if (insert) {
-      ToolPose mid = pose_at(i, Derived(in.poses[i]), 0.5 * (s[i - 1] + s[i]),
-                             surface ? 0.5 * (u[i - 1] + u[i]) : 0.0);
-      if (surface == nullptr) mid.p_w_tip = 0.5 * (in.poses[i - 1].p_w_tip + in.poses[i].p_w_tip);
-      out->poses.push_back(mid);
+      ToolPose mid = pose_at(i, Derived(poses[i]), 0.5 * (s[i - 1] + s[i]),
+                             u != nullptr ? 0.5 * (u[i - 1] + u[i]) : 0.0);
+      if (u == nullptr) mid.p_w_tip = 0.5 * (poses[i - 1].p_w_tip + poses[i].p_w_tip);
+      out->push_back(mid);
       ++report->poses_inserted;
     }
-    out->poses.push_back(pose_at(i, in.poses[i], s[i], surface ? u[i] : 0.0));
+    out->push_back(pose_at(i, poses[i], s[i], u != nullptr ? u[i] : 0.0));
   }
   return Status::Ok();
 }
@@ -211,21 +249,22 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   std::string why;
   if (!options.IsValid(&why)) return Status::Error("spline options: " + why);
   *report = SplineSmootherReport();
+  SmoothingJob job{in, machine, surface, cutter, options, {}};
+  // Projected once for the whole path: every run starts at a rapid (or the
+  // path's start), where the projection searches the whole rail afresh.
+  if (surface != nullptr) job.u = ProjectPathOntoRail(surface->rail(0), in);
   ToolPath result = WithoutPoses(in);
-  result.poses.reserve(in.poses.size());
+  result.poses.reserve(options.insert_transitions ? 2 * in.poses.size() : in.poses.size());
   // Each cutting run separately: a spline must not bridge a rapid between
-  // two passes. A run starts at the pose a rapid reaches.
+  // two passes. A run starts at the pose a rapid reaches. Runs are read in
+  // place and written straight into the result: copies of the poses were a
+  // third of the method's time on long paths.
   const size_t n = in.poses.size();
   for (size_t first = 0; first < n;) {
     size_t end = first + 1;
     while (end < n && !in.poses[end].rapid) ++end;
-    // Not a copy of `in`: that would copy every pose once per run.
-    ToolPath run = WithoutPoses(in);
-    run.poses.assign(in.poses.begin() + first, in.poses.begin() + end);
-    ToolPath smoothed;
-    Status st = SmoothRun(run, machine, surface, cutter, options, &smoothed, report);
+    Status st = SmoothRun(job, first, end, &result.poses, report);
     if (!st.ok()) return st;
-    result.poses.insert(result.poses.end(), smoothed.poses.begin(), smoothed.poses.end());
     first = end;
   }
   *out = std::move(result);

@@ -1,6 +1,7 @@
 // The seed's plain method (000 paper, section 3), the `--mode=spline` output
 // and the initial guess of the high-accuracy mode:
-//  1. unwrap A and C along the path (Machine::AssignJoints);
+//  1. unwrap A and C along the path (Machine::AssignRotaryAngles, the A
+//     and C of Machine::AssignJoints);
 //  2. find the zones of abrupt rotary acceleration — |d2A/ds2| or |d2C/ds2|
 //     above `zone_factor` times its median over the path — and, with a
 //     surface, of fast Gaussian-curvature change (|dK/ds| above

@@ -3,9 +3,9 @@
 // tries both on the hypar's distorted CAM path.
 #include "solver/pole_passage.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "model/json_io.h"
 #include "model/path_generator.h"
@@ -19,8 +19,8 @@ namespace {
 constexpr double kDeg = M_PI / 180.0;
 
 Eigen::Vector3d Axis(double polar, double azimuth) {
-  return Eigen::Vector3d(std::sin(polar) * std::sin(azimuth), std::sin(polar) * std::cos(azimuth),
-                         std::cos(polar));
+  return Eigen::Vector3d(std::sin(polar) * std::sin(azimuth),
+                         std::sin(polar) * std::cos(azimuth), std::cos(polar));
 }
 
 // n poses along x; the axis tilted `polar(i)` from +Z with its azimuth
@@ -52,10 +52,16 @@ TEST(FindPolePassagesTest, FindsTheStretchWithinThePoleAngle) {
 TEST(FindPolePassagesTest, IgnoresFarPassesSmallSweepsAndRapids) {
   auto polar_3deg = [](int) { return 3.0 * kDeg; };
   // Circling at 3 deg: a passage at a 5 deg pole angle, none at 2 deg.
-  EXPECT_EQ(FindPolePassages(CirclingPath(30, 200 * kDeg, polar_3deg), 5 * kDeg).size(), 1u);
-  EXPECT_TRUE(FindPolePassages(CirclingPath(30, 200 * kDeg, polar_3deg), 2 * kDeg).empty());
+  EXPECT_EQ(FindPolePassages(CirclingPath(30, 200 * kDeg, polar_3deg), 5 * kDeg)
+                .size(),
+            1u);
+  EXPECT_TRUE(
+      FindPolePassages(CirclingPath(30, 200 * kDeg, polar_3deg), 2 * kDeg)
+          .empty());
   // A sweep under a quarter turn has no plausible other way round.
-  EXPECT_TRUE(FindPolePassages(CirclingPath(30, 80 * kDeg, polar_3deg), 5 * kDeg).empty());
+  EXPECT_TRUE(
+      FindPolePassages(CirclingPath(30, 80 * kDeg, polar_3deg), 5 * kDeg)
+          .empty());
   // A rapid splits the stretch: 0..14 sweeps 193 deg, 15..29 likewise.
   ToolPath split = CirclingPath(30, 400 * kDeg, polar_3deg);
   split.poses[15].rapid = true;
@@ -65,8 +71,10 @@ TEST(FindPolePassagesTest, IgnoresFarPassesSmallSweepsAndRapids) {
   EXPECT_EQ(passages[1].first, 15u);
 }
 
-TEST(RerouteAroundPoleTest, TurnsTheOtherWayKeepingPolarAngleEndsAndFluteMiddle) {
-  const ToolPath path = CirclingPath(40, 250 * kDeg, [](int i) { return (1.0 + 0.1 * i) * kDeg; });
+TEST(RerouteAroundPoleTest,
+     TurnsTheOtherWayKeepingPolarAngleEndsAndFluteMiddle) {
+  const ToolPath path = CirclingPath(
+      40, 250 * kDeg, [](int i) { return (1.0 + 0.1 * i) * kDeg; });
   const std::vector<PolePassage> passages = FindPolePassages(path, 5 * kDeg);
   ASSERT_EQ(passages.size(), 1u);
   const Cutter cutter{4.0, 30.0, 0.0};
@@ -83,7 +91,9 @@ TEST(RerouteAroundPoleTest, TurnsTheOtherWayKeepingPolarAngleEndsAndFluteMiddle)
     EXPECT_NEAR(b.a_w.norm(), 1.0, 1e-12) << i;
     EXPECT_NEAR(std::acos(b.a_w.z()), std::acos(a.a_w.z()), 1e-9) << i;
     // The cutter pivots about the middle of its flute.
-    EXPECT_LT((b.p_w_tip + 15.0 * b.a_w - a.p_w_tip - 15.0 * a.a_w).norm(), 1e-9) << i;
+    EXPECT_LT((b.p_w_tip + 15.0 * b.a_w - a.p_w_tip - 15.0 * a.a_w).norm(),
+              1e-9)
+        << i;
     const bool inside = i >= passages[0].first && i <= passages[0].last;
     if (!inside || i == passages[0].first || i == passages[0].last) {
       EXPECT_LT((b.a_w - a.a_w).norm(), 1e-9) << i;
@@ -91,7 +101,8 @@ TEST(RerouteAroundPoleTest, TurnsTheOtherWayKeepingPolarAngleEndsAndFluteMiddle)
   }
   // Halfway through, the two routes lie on opposite sides of the pole.
   const size_t mid = (passages[0].first + passages[0].last) / 2;
-  EXPECT_LT(path.poses[mid].a_w.head<2>().dot(other.poses[mid].a_w.head<2>()), 0.0);
+  EXPECT_LT(path.poses[mid].a_w.head<2>().dot(other.poses[mid].a_w.head<2>()),
+            0.0);
 }
 
 // The hypar's distorted CAM path passes within half a degree of the pole
@@ -102,9 +113,13 @@ TEST(RerouteAroundPoleTest, TurnsTheOtherWayKeepingPolarAngleEndsAndFluteMiddle)
 TEST(SmoothBothWaysRoundPolesTest, HyparCamPathTakesTheSurfacesSideOfThePole) {
   RuledSurface surface;
   Machine machine;
-  ASSERT_TRUE(ReadSurfaceJson(testing::SourcePath("data/surfaces/hypar.json"), &surface).ok());
   ASSERT_TRUE(
-      ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &machine).ok());
+      ReadSurfaceJson(testing::SourcePath("data/surfaces/hypar.json"), &surface)
+          .ok());
+  ASSERT_TRUE(
+      ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"),
+                      &machine)
+          .ok());
   FlankPathOptions g;
   g.strategy = FlankStrategy::kDoublePointOffset;
   ToolPath dpo;
@@ -116,16 +131,19 @@ TEST(SmoothBothWaysRoundPolesTest, HyparCamPathTakesTheSurfacesSideOfThePole) {
   ASSERT_TRUE(GenerateFlankPath(surface, g, &cam).ok());
   ToolPath guess;
   SplineSmootherReport spline_report;
-  ASSERT_TRUE(SmoothWithSplines(cam, machine, &surface, *cam.cutter, SplineSmootherOptions(),
-                                &guess, &spline_report)
+  ASSERT_TRUE(SmoothWithSplines(cam, machine, &surface, *cam.cutter,
+                                SplineSmootherOptions(), &guess, &spline_report)
                   .ok());
   const SmoothingInputs inputs{&cam, &guess, &surface, &*cam.cutter, &machine};
   const HighAccuracyOptions options;
 
   ToolPath one_way, both_ways;
   HighAccuracyReport one_way_report, both_ways_report;
-  ASSERT_TRUE(SmoothHighAccuracy(inputs, options, &one_way, &one_way_report).ok());
-  ASSERT_TRUE(SmoothBothWaysRoundPoles(inputs, options, &both_ways, &both_ways_report).ok());
+  ASSERT_TRUE(
+      SmoothHighAccuracy(inputs, options, &one_way, &one_way_report).ok());
+  ASSERT_TRUE(
+      SmoothBothWaysRoundPoles(inputs, options, &both_ways, &both_ways_report)
+          .ok());
   ASSERT_TRUE(both_ways_report.converged);
   EXPECT_EQ(both_ways_report.pole_passages, 1);
   EXPECT_EQ(both_ways_report.pole_passages_rerouted, 1);
@@ -133,8 +151,8 @@ TEST(SmoothBothWaysRoundPolesTest, HyparCamPathTakesTheSurfacesSideOfThePole) {
 
   auto worst_mm = [&](const ToolPath& path) {
     PathMetrics m;
-    EXPECT_TRUE(EvaluatePath(path, machine, &surface, *cam.cutter, DeviationOptions(),
-                             MotionOptions(), &m)
+    EXPECT_TRUE(EvaluatePath(path, machine, &surface, *cam.cutter,
+                             DeviationOptions(), MotionOptions(), &m)
                     .ok());
     return WorstDeviationMm(m);
   };

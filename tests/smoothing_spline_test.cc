@@ -106,6 +106,33 @@ TEST(SmoothingSplineTest, DownWeightedPointsAreIgnored) {
   EXPECT_NEAR(f(s[25]), 0.2 * s[25], 1e-2);
 }
 
+TEST(SmoothingSplineTest, FitEachIsFitWithinToleranceOfEverySeries) {
+  // Three series (one pair solved together, one alone) on shared
+  // abscissae and weights, as the A and C of a path are fitted.
+  const std::vector<double> s = Range(300, 0.3);
+  std::vector<double> a, c, b, w(s.size(), 1.0);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.004);
+  for (size_t i = 0; i < s.size(); ++i) {
+    a.push_back(std::sin(0.05 * s[i]) + noise(rng));
+    c.push_back(0.3 * s[i] + (i > 150 && i < 160 ? 0.5 : 0.0) + noise(rng));
+    b.push_back(std::cos(0.2 * s[i]));
+    if (i > 148 && i < 162) w[i] = 1e-4;
+  }
+  SmoothingSpline fa, fc, fb;
+  ASSERT_TRUE(SmoothingSpline::FitEachWithinTolerance(s, {&a, &c, &b}, w, 0.01, {&fa, &fc, &fb})
+                  .ok());
+  const std::vector<const std::vector<double>*> ys = {&a, &c, &b};
+  const std::vector<const SmoothingSpline*> fits = {&fa, &fc, &fb};
+  for (size_t k = 0; k < ys.size(); ++k) {
+    SmoothingSpline alone;
+    ASSERT_TRUE(SmoothingSpline::FitWithinTolerance(s, *ys[k], w, 0.01, &alone).ok());
+    EXPECT_EQ(fits[k]->smoothing(), alone.smoothing()) << "series " << k;
+    EXPECT_EQ(fits[k]->values(), alone.values()) << "series " << k;
+    EXPECT_EQ(fits[k]->Evaluate(40.05), alone.Evaluate(40.05)) << "series " << k;
+  }
+}
+
 TEST(SmoothingSplineTest, ScalesLinearlyToAMillionPoints) {
   const int n = 1000000;
   std::vector<double> s(n), y(n);
