@@ -100,10 +100,28 @@ class DeviationCost {
       const T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis);
       *r++ = T(unit * (d < T(0.0) ? settings_.overcut_factor : 1.0)) * d;
     }
+    // Most guard points lie outside the cutter, where the residual and its
+    // derivatives are exactly zero; a plain double distance finds those, so
+    // only the few inside pay for the differentiated one.
+    const Eigen::Vector3d tip_value = ValueOf(tip), axis_value = ValueOf(axis);
     for (const Eigen::Vector3d& q : points_.guard_w) {
+      if (SignedDistanceToFlank<double>(settings_.cutter, q, tip_value, axis_value) >= 0.0) {
+        *r++ = T(0.0);
+        continue;
+      }
       const T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis);
       *r++ = d < T(0.0) ? T(unit * settings_.overcut_factor) * d : T(0.0);
     }
+  }
+
+  static double ValueOf(double x) { return x; }
+  template <int N>
+  static double ValueOf(const ceres::Jet<double, N>& x) {
+    return x.a;
+  }
+  template <typename T>
+  static Eigen::Vector3d ValueOf(const Eigen::Matrix<T, 3, 1>& v) {
+    return Eigen::Vector3d(ValueOf(v.x()), ValueOf(v.y()), ValueOf(v.z()));
   }
 
   Points points_;

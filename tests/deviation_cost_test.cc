@@ -65,8 +65,18 @@ TEST(DeviationCostTest, MidMoveUsesJointSpaceInterpolation) {
 TEST(DeviationCostTest, JacobiansMatchNumericDifferences) {
   DeviationCost::Points points;
   points.contact_w = {{4.5, 0.3, 2}, {3.2, -1, 9}};
-  points.guard_w = {{-2, 4.4, 15}, {1, 4.1, 3}};
+  // Guards outside the cutter (their rows are skipped in plain doubles) and
+  // one well inside it (differentiated).
+  points.guard_w = {{-2, 4.4, 15}, {1, 4.1, 3}, {0.5, 0.5, 6}};
   std::array<double, 5> p0 = {0.2, 0.4, 0.1, -0.2, 0.05}, p1 = {0.25, 0.5, 0.3, 0.1, 0.0};
+  {
+    std::unique_ptr<ceres::CostFunction> cost(
+        DeviationCost::CreateAtPose(points, Settings(), 0.7));
+    const double* params[] = {p0.data()};
+    double r[5];
+    ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
+    EXPECT_LT(r[4], -1.0);  // the premise: the inner guard cuts
+  }
   testing::ExpectJacobiansMatchNumeric(DeviationCost::CreateAtPose(points, Settings(), 0.7),
                                        {p0.data()});
   testing::ExpectJacobiansMatchNumeric(
