@@ -2,15 +2,16 @@
 
 #include <cmath>
 
+#include "model/machine.h"
+
 namespace tpopt {
 namespace {
 
-double PolarAngle(const Eigen::Vector3d& a) {
-  return std::atan2(std::hypot(a.x(), a.y()), a.z());
+// The polar angle of an axis from +Z and its azimuth, as the machine's A
+// and C on the A >= 0 branch.
+Eigen::Vector2d PolarAndAzimuth(const Eigen::Vector3d& a_w) {
+  return AxisToAngles(a_w)[0];
 }
-
-// The azimuth measured as the machine's C on its A >= 0 branch.
-double Azimuth(const Eigen::Vector3d& a) { return std::atan2(a.x(), a.y()); }
 
 // `angle` moved by whole turns to within half a turn of `near`.
 double UnwrapNear(double angle, double near) {
@@ -18,16 +19,18 @@ double UnwrapNear(double angle, double near) {
 }
 
 // Unwrapped azimuths of poses first..last; straight over the pole, where
-// the azimuth is undefined, the previous one carries on.
+// the machine holds C because the azimuth is undefined (its singularity
+// rule), the previous one carries on.
 std::vector<double> UnwrappedAzimuths(const ToolPath& path, size_t first,
                                       size_t last) {
   std::vector<double> azimuth;
   azimuth.reserve(last - first + 1);
-  double previous = Azimuth(path.poses[first].a_w);
+  double previous = PolarAndAzimuth(path.poses[first].a_w)[1];
   for (size_t i = first; i <= last; ++i) {
-    const Eigen::Vector3d& a = path.poses[i].a_w;
-    if (std::hypot(a.x(), a.y()) > 1e-12)
-      previous = UnwrapNear(Azimuth(a), previous);
+    const Eigen::Vector2d angles = PolarAndAzimuth(path.poses[i].a_w);
+    if (std::sin(angles[0]) >= Machine::kSingularSinA) {
+      previous = UnwrapNear(angles[1], previous);
+    }
     azimuth.push_back(previous);
   }
   return azimuth;
@@ -41,13 +44,13 @@ std::vector<PolePassage> FindPolePassages(const ToolPath& path,
   const size_t n = path.poses.size();
   size_t i = 0;
   while (i < n) {
-    if (PolarAngle(path.poses[i].a_w) >= pole_angle_rad) {
+    if (PolarAndAzimuth(path.poses[i].a_w)[0] >= pole_angle_rad) {
       ++i;
       continue;
     }
     size_t last = i;
     while (last + 1 < n && !path.poses[last + 1].rapid &&
-           PolarAngle(path.poses[last + 1].a_w) < pole_angle_rad) {
+           PolarAndAzimuth(path.poses[last + 1].a_w)[0] < pole_angle_rad) {
       ++last;
     }
     const std::vector<double> azimuth = UnwrappedAzimuths(path, i, last);
@@ -69,13 +72,11 @@ ToolPath RerouteAroundPole(const ToolPath& path, const PolePassage& passage,
   const double pivot_height = 0.5 * cutter.flute_length_mm;
   for (size_t i = passage.first; i <= passage.last; ++i) {
     ToolPose& pose = out.poses[i];
-    const double polar = PolarAngle(pose.a_w);
+    const double polar = PolarAndAzimuth(pose.a_w)[0];
     const double turned =
         azimuth.front() +
         (azimuth[i - passage.first] - azimuth.front()) * scale;
-    const Eigen::Vector3d axis(std::sin(polar) * std::sin(turned),
-                               std::sin(polar) * std::cos(turned),
-                               std::cos(polar));
+    const Eigen::Vector3d axis = AnglesToAxis<double>(polar, turned);
     pose.p_w_tip += pivot_height * (pose.a_w - axis);
     pose.a_w = axis;
   }
