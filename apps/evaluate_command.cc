@@ -4,6 +4,7 @@
 #include "apps/commands.h"
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
+#include "apps/huge_page_malloc.h"
 #include "apps/job_io.h"
 #include "apps/options_from_flags.h"
 #include "apps/picture_outputs.h"
@@ -43,6 +44,7 @@ int RunEvaluate(const Invocation& invocation) {
   }
   nlohmann::json report = MetricsJson(metrics);
   report["tpopt_version"] = kTpoptVersion;
+  report["huge_page_malloc"] = HugePageMallocActive();
   report["command"] = invocation.command_line;
   report["input_file"] = FLAGS_in;
   report["surface"] = FLAGS_surface;

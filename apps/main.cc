@@ -11,6 +11,7 @@
 #include "apps/exit_codes.h"
 #include "apps/flag_parser.h"
 #include "apps/flags.h"
+#include "apps/huge_page_malloc.h"
 #include "apps/version.h"
 
 namespace {
@@ -36,6 +37,7 @@ constexpr char kUsage[] =
 }  // namespace
 
 int main(int argc, char** argv) {
+  tpopt::RestartWithHugePageMalloc(argv);
   gflags::SetUsageMessage(kUsage);
   gflags::SetVersionString(tpopt::kTpoptVersion);
   FLAGS_logtostderr = true;

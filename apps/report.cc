@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "apps/commands.h"
+#include "apps/huge_page_malloc.h"
 #include "apps/version.h"
 #include "model/atomic_file.h"
 #include "solver/smoothing_pipeline.h"
@@ -82,6 +83,7 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                                 const SmoothingResult& result) {
   nlohmann::json report = MetricsJson(result.output_metrics);
   report["tpopt_version"] = kTpoptVersion;
+  report["huge_page_malloc"] = HugePageMallocActive();
   report["command"] = invocation.command_line;
   report["mode"] = mode;
   report["input"] = MetricsJson(result.input_metrics);

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/huge_page_malloc.h"
 #include "model/gcode_io.h"
 #include "model/json_io.h"
 #include "model/path_generator.h"
@@ -211,6 +212,7 @@ std::string Csv(const std::vector<Row>& rows) {
 }  // namespace tpopt
 
 int main(int argc, char** argv) {
+  tpopt::RestartWithHugePageMalloc(argv);
   std::string out;
   int poses = 300;
   for (int i = 1; i < argc; ++i) {

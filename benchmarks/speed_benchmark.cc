@@ -9,6 +9,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "apps/huge_page_malloc.h"
 #include "model/apt_io.h"
 #include "model/deviation.h"
 #include "model/json_io.h"
@@ -155,4 +156,13 @@ BENCHMARK(BM_FitWindow)->Arg(0)->Arg(1)->Unit(benchmark::kNanosecond);
 }  // namespace
 }  // namespace tpopt
 
-BENCHMARK_MAIN();
+// BENCHMARK_MAIN, with the program first restarted for huge pages as tpopt
+// is, so that the timings are those of the command.
+int main(int argc, char** argv) {
+  tpopt::RestartWithHugePageMalloc(argv);
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
