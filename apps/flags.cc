@@ -82,6 +82,9 @@ DEFINE_int32(window_poses, 20000,
 DEFINE_double(pole_passage_deg, 5.0,
               "high_accuracy: stretches whose axis passes within this angle of A = 0 while C turns "
               "a quarter turn or more are also solved the other way round the pole (0 = never).");
+DEFINE_int32(pole_window_path_poses, 5000,
+             "high_accuracy: on a longer path each pole passage is solved the other way in a "
+             "window round it, not by solving the whole path again (0 = always the whole path).");
 DEFINE_int32(num_threads, 2, "high_accuracy: Ceres threads (the same count gives the same result).");
 DEFINE_double(spline_tolerance_deg, 0.05,
               "spline: largest A/C change the fit may make outside the abrupt zones, deg "

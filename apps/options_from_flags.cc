@@ -36,6 +36,7 @@ Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptio
   ha->refine_iterations = FLAGS_refine_iterations;
   ha->window_poses = FLAGS_window_poses;
   ha->pole_passage_deg = FLAGS_pole_passage_deg;
+  ha->pole_window_path_poses = FLAGS_pole_window_path_poses;
   ha->num_threads = FLAGS_num_threads;
   ha->default_feed_mm_per_min = FLAGS_feed;
   ha->angle_tolerance_deg = FLAGS_angle_tolerance_deg;

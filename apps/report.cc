@@ -111,6 +111,7 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                        {"poses_clamped_to_band", ha.poses_clamped},
                        {"pole_passages", ha.pole_passages},
                        {"pole_passages_rerouted", ha.pole_passages_rerouted},
+                       {"pole_passages_in_windows", ha.pole_passages_in_windows},
                        {"solve_tolerance_mm", result.solve_tolerance_mm}};
   }
   return report;

@@ -68,8 +68,9 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
                   result.solve_tolerance_mm, settings.high_accuracy.tolerance_mm);
     }
     if (ha.pole_passages > 0) {
-      std::printf("  pole passages: %d solved both ways round A = 0, %d kept the other way\n",
-                  ha.pole_passages, ha.pole_passages_rerouted);
+      std::printf("  pole passages: %d solved both ways round A = 0 (%d in a window round them), "
+                  "%d kept the other way\n",
+                  ha.pole_passages, ha.pole_passages_in_windows, ha.pole_passages_rerouted);
     }
   }
   if (result.feed.moves_slowed > 0) {

@@ -67,6 +67,48 @@ void BM_HighAccuracy(benchmark::State& state) {
 }
 BENCHMARK(BM_HighAccuracy)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(1);
 
+// Seven passes of the hypar's distorted CAM path (3,000 poses each, a
+// rapid before each), every one crossing near the A = 0 pole: each passage
+// tried the other way by solving the whole path again (arg 0) or in a
+// window round it (arg 1, solver/pole_passage.h).
+void BM_PolePassages(benchmark::State& state) {
+  RuledSurface surface;
+  Machine machine;
+  const std::string data = std::string(TPOPT_SOURCE_DIR) + "/data/";
+  ReadSurfaceJson(data + "surfaces/hypar.json", &surface);
+  ReadMachineJson(data + "machines/jcde2022_ac.json", &machine);
+  FlankPathOptions g;
+  g.poses = 3000;
+  g.uv_distortion = 0.03;
+  g.axis_noise_deg = 0.3;
+  ToolPath pass;
+  GenerateFlankPath(surface, g, &pass);
+  ToolPath path = WithoutPoses(pass);
+  for (int k = 0; k < 7; ++k) {
+    for (size_t i = 0; i < pass.poses.size(); ++i) {
+      path.poses.push_back(pass.poses[i]);
+      path.poses.back().rapid = k > 0 && i == 0;
+    }
+  }
+  ToolPath guess;
+  SplineSmootherReport spline_report;
+  SmoothWithSplines(path, machine, &surface, *path.cutter, SplineSmootherOptions(), &guess,
+                    &spline_report);
+  HighAccuracyOptions options;
+  options.pole_window_path_poses = state.range(0) == 0 ? 0 : 5000;
+  for (auto _ : state) {
+    ToolPath out;
+    HighAccuracyReport report;
+    const SmoothingInputs inputs{&path, &guess, &surface, &*path.cutter, &machine};
+    SmoothBothWaysRoundPoles(inputs, options, &out, &report);
+    state.counters["passages"] = report.pole_passages;
+    state.counters["rerouted"] = report.pole_passages_rerouted;
+    state.counters["in_windows"] = report.pole_passages_in_windows;
+    state.counters["final_cost"] = report.final_cost;
+  }
+}
+BENCHMARK(BM_PolePassages)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(1);
+
 void BM_Spline(benchmark::State& state) {
   const Blade& b = SharedBlade();
   const ToolPath path = DistortedPath(static_cast<int>(state.range(0)));

@@ -257,6 +257,8 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
     err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
   } else if (window_poses != 0 && window_poses < 100) {
     err << "window poses " << window_poses << " must be 0 (no windows) or >= 100";
+  } else if (pole_window_path_poses < 0) {
+    err << "pole window path poses " << pole_window_path_poses << " must be >= 0";
   } else if (coarse_poses < 0 || refine_iterations < 0) {
     err << "coarse poses " << coarse_poses << " and refine iterations " << refine_iterations
         << " must be >= 0";
@@ -442,7 +444,15 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
   }
   *out = *inputs.input;
   const std::vector<bool> free_pose = FreePoses(inputs);
+  const ToolPath& guess = inputs.initial_guess ? *inputs.initial_guess : *inputs.input;
   for (size_t i = 0; i < out->poses.size(); ++i) {
+    if (!free_pose[i]) {
+      // Held: the guess itself, not its round trip through A and C (which
+      // would move it by ~1e-16 and break a seam's exact match).
+      out->poses[i].p_w_tip = guess.poses[i].p_w_tip;
+      out->poses[i].a_w = guess.poses[i].a_w;
+      continue;
+    }
     const auto& p = state.poses[i];
     out->poses[i].p_w_tip = Eigen::Vector3d(p[kPoseTip], p[kPoseTip + 1], p[kPoseTip + 2]);
     out->poses[i].a_w = AnglesToAxis<double>(p[kPoseA], p[kPoseC]);

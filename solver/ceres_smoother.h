@@ -91,6 +91,12 @@ struct HighAccuracyOptions {
   // more is also solved the other way round the pole, and the cheaper
   // solution kept (solver/pole_passage.h). Degrees, [0, 90); 0 = never.
   double pole_passage_deg = 5.0;
+  // On a path of more poses than this, each passage is tried the other way
+  // in a window round it, not by solving the whole path again, so that its
+  // cost does not grow with the path (0 = always the whole path). A window
+  // takes two solves of a few hundred poses where the whole path takes one:
+  // on the hypar they cost what a whole solve of ~2,500 poses does.
+  int pole_window_path_poses = 5000;
   // Ceres' relative cost-change stop.
   double function_tolerance = 1e-6;
   // Jacobian evaluation threads. Runs with the same count give the same
@@ -145,6 +151,7 @@ struct HighAccuracyReport {
   // of them the kept solution takes the other way (solver/pole_passage.h).
   int pole_passages = 0;
   int pole_passages_rerouted = 0;
+  int pole_passages_in_windows = 0;  // tried in a window round them
 };
 
 // Fills `state` and adds every residual block to `problem`.

@@ -27,6 +27,18 @@ std::vector<double> TipArcLength(const ToolPath& path) {
   return s;
 }
 
+// `stations` with every held pose added (the first `held_first` and the
+// last `held_last` of n): a held pose must keep its guess at every level,
+// and only a station is sure to.
+std::vector<size_t> WithHeldPoses(std::vector<size_t> stations, size_t n, size_t held_first,
+                                  size_t held_last) {
+  for (size_t i = 0; i < std::min(held_first, n); ++i) stations.push_back(i);
+  for (size_t i = n - std::min(held_last, n); i < n; ++i) stations.push_back(i);
+  std::sort(stations.begin(), stations.end());
+  stations.erase(std::unique(stations.begin(), stations.end()), stations.end());
+  return stations;
+}
+
 }  // namespace
 
 std::vector<size_t> CoarseStations(const ToolPath& path, size_t target) {
@@ -95,13 +107,19 @@ Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOption
   // Each level keeps one pose in kLevelRatio, down to coarse_poses.
   constexpr size_t kLevelRatio = 8;
   const size_t target = std::max<size_t>(options.coarse_poses, n / kLevelRatio);
-  const std::vector<size_t> stations = CoarseStations(*inputs.input, target);
+  const std::vector<size_t> stations = WithHeldPoses(
+      CoarseStations(*inputs.input, target), n, inputs.held_first, inputs.held_last);
   const ToolPath coarse_input = SubPath(*inputs.input, stations);
   const ToolPath coarse_guess =
       SubPath(inputs.initial_guess ? *inputs.initial_guess : *inputs.input, stations);
   SmoothingInputs coarse = inputs;
   coarse.input = &coarse_input;
   coarse.initial_guess = &coarse_guess;
+  coarse.held_first = static_cast<size_t>(
+      std::lower_bound(stations.begin(), stations.end(), inputs.held_first) - stations.begin());
+  coarse.held_last = static_cast<size_t>(
+      stations.end() -
+      std::lower_bound(stations.begin(), stations.end(), n - std::min(inputs.held_last, n)));
   VLOG(1) << "high_accuracy: coarse solve over " << stations.size() << " of " << n << " poses";
   // The refinement finishes the job, so the coarse solve may stop once an
   // iteration changes its cost by less than 1e-4: the last dozen iterations

@@ -43,7 +43,9 @@ Status InterpolateStations(const ToolPath& fine, const std::vector<size_t>& stat
 // subset of stations cannot represent), else over every 8th pose
 // (recursively), interpolated back and refined for at most
 // options.refine_iterations. Each level's solve is windowed when long
-// (solver/windowed_solve.h).
+// (solver/windowed_solve.h). Poses the inputs hold (held_first, held_last)
+// are stations of every level, held there too, and so keep the guess
+// exactly.
 Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
                          ToolPath* out, HighAccuracyReport* report);
 

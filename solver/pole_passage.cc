@@ -1,8 +1,11 @@
 #include "solver/pole_passage.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "model/machine.h"
+#include "solver/coarse_to_fine.h"
 
 namespace tpopt {
 namespace {
@@ -83,6 +86,150 @@ ToolPath RerouteAroundPole(const ToolPath& path, const PolePassage& passage,
   return out;
 }
 
+namespace {
+
+// Poses each side of a passage that its re-solve frees too: the smoothness
+// stencils carry a change of side along the path before it dies out. At
+// least the passage's own length, and at least kMinMarginPoses.
+constexpr size_t kMinMarginPoses = 100;
+// Poses held at a window's seams: the widest stencil (third differences)
+// spans four poses (as solver/windowed_solve.cc holds them).
+constexpr size_t kHeldAtSeam = 3;
+
+// The stretch of the path a passage's re-solve works on.
+struct PassageWindow {
+  size_t first = 0, last = 0;  // inclusive
+  bool whole_path = false;
+};
+
+PassageWindow WindowAround(const PolePassage& passage, size_t poses,
+                           const HighAccuracyOptions& options) {
+  const size_t margin = std::max(kMinMarginPoses, passage.last - passage.first + 1);
+  PassageWindow w;
+  w.first = passage.first > margin ? passage.first - margin : 0;
+  w.last = std::min(poses - 1, passage.last + margin);
+  const size_t limit = static_cast<size_t>(options.pole_window_path_poses);
+  w.whole_path = limit == 0 || poses <= limit || (w.first == 0 && w.last + 1 == poses);
+  return w;
+}
+
+// The solved window, and the cost of the window's problem at its optimum.
+struct WindowSolve {
+  ToolPath poses;
+  HighAccuracyReport report;
+};
+
+// Solves poses [w.first, w.last] of the path from `guess` (the window's
+// poses), its seams held at the guess where the window does not reach the
+// path's ends.
+Status SolveWindow(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                   const PassageWindow& w, const ToolPath& guess, WindowSolve* out) {
+  std::vector<size_t> indices(w.last - w.first + 1);
+  std::iota(indices.begin(), indices.end(), w.first);
+  const ToolPath window_input = SubPath(*inputs.input, indices);
+  SmoothingInputs window = inputs;
+  window.input = &window_input;
+  window.initial_guess = &guess;
+  window.held_first = w.first > 0 ? kHeldAtSeam : 0;
+  window.held_last = w.last + 1 < inputs.input->poses.size() ? kHeldAtSeam : 0;
+  return SmoothHighAccuracy(window, options, &out->poses, &out->report);
+}
+
+// The whole problem's cost, by family, at `path`: a solve of no iterations
+// from it (windowed on a long path, as the solve itself was).
+Status EvaluateFinalCost(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                         const ToolPath& path, HighAccuracyReport* report) {
+  SmoothingInputs at_path = inputs;
+  at_path.initial_guess = &path;
+  HighAccuracyOptions evaluate_only = options;
+  evaluate_only.max_iterations = 0;
+  evaluate_only.coarse_poses = 0;  // coarse levels would move the path
+  ToolPath unchanged;
+  HighAccuracyReport evaluated;
+  Status s = SmoothHighAccuracy(at_path, evaluate_only, &unchanged, &evaluated);
+  if (!s.ok()) return s;
+  report->final_cost = evaluated.final_cost;
+  report->final_cost_by_family = evaluated.final_cost_by_family;
+  return Status::Ok();
+}
+
+// The whole path solved from the guess with `passage` taken the other way.
+Status SolveWholeOtherWay(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                          const ToolPath& rerouted, WindowSolve* out) {
+  SmoothingInputs other_way = inputs;
+  other_way.initial_guess = &rerouted;
+  return SmoothHighAccuracy(other_way, options, &out->poses, &out->report);
+}
+
+// Tries `passage` the other way round on `solved` (the best path so far,
+// whose report is `report`), from `guess` (the initial guess so far). On a
+// path longer than the passage's window, only the window is solved again,
+// both ways from the current solution, and the better is kept: the cost of
+// a passage stays bounded however long the path. Sets `rerouted` when the
+// other way won (then `solved` and `guess` are updated) and `windowed` when
+// only a window was solved (then `report`'s costs are stale).
+Status TryTheOtherWay(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                      const PolePassage& passage, ToolPath* solved, HighAccuracyReport* report,
+                      ToolPath* guess, bool* rerouted, bool* windowed) {
+  *rerouted = false;
+  *windowed = false;
+  ToolPath other_guess = RerouteAroundPole(*guess, passage, *inputs.cutter);
+  const PassageWindow w = WindowAround(passage, solved->poses.size(), options);
+  if (w.whole_path) {
+    WindowSolve other;
+    Status s = SolveWholeOtherWay(inputs, options, other_guess, &other);
+    if (!s.ok()) return s;
+    report->iterations += other.report.iterations;
+    report->solve_time_s += other.report.solve_time_s;
+    if (!other.report.converged || !(other.report.final_cost < report->final_cost)) {
+      return Status::Ok();
+    }
+    const int iterations = report->iterations;
+    const double time_s = report->solve_time_s;
+    *solved = std::move(other.poses);
+    *report = std::move(other.report);
+    report->iterations = iterations;
+    report->solve_time_s = time_s;
+    *guess = std::move(other_guess);
+    *rerouted = true;
+    return Status::Ok();
+  }
+  *windowed = true;
+  // The window's guesses: the solution so far, and the same with the
+  // passage's poses from the rerouted guess.
+  std::vector<size_t> indices(w.last - w.first + 1);
+  std::iota(indices.begin(), indices.end(), w.first);
+  const ToolPath keep_guess = SubPath(*solved, indices);
+  ToolPath turn_guess = keep_guess;
+  for (size_t i = passage.first; i <= passage.last; ++i) {
+    turn_guess.poses[i - w.first].p_w_tip = other_guess.poses[i].p_w_tip;
+    turn_guess.poses[i - w.first].a_w = other_guess.poses[i].a_w;
+  }
+  WindowSolve keep, turn;
+  Status s = SolveWindow(inputs, options, w, keep_guess, &keep);
+  if (s.ok()) s = SolveWindow(inputs, options, w, turn_guess, &turn);
+  if (!s.ok()) return s;
+  report->iterations += keep.report.iterations + turn.report.iterations;
+  report->solve_time_s += keep.report.solve_time_s + turn.report.solve_time_s;
+  if (!keep.report.converged || !turn.report.converged) return Status::Ok();
+  // Costs of the same window problem compare; they do not add up to the
+  // whole path's (the weights are normalised by the problem's length), so
+  // the caller evaluates the whole again at the end.
+  const bool turn_wins = turn.report.final_cost < keep.report.final_cost;
+  const WindowSolve& winner = turn_wins ? turn : keep;
+  for (size_t i = 0; i < indices.size(); ++i) {
+    solved->poses[w.first + i].p_w_tip = winner.poses.poses[i].p_w_tip;
+    solved->poses[w.first + i].a_w = winner.poses.poses[i].a_w;
+  }
+  if (turn_wins) {
+    *guess = std::move(other_guess);
+    *rerouted = true;
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
 Status SmoothBothWaysRoundPoles(const SmoothingInputs& inputs,
                                 const HighAccuracyOptions& options,
                                 ToolPath* out, HighAccuracyReport* report) {
@@ -95,32 +242,22 @@ Status SmoothBothWaysRoundPoles(const SmoothingInputs& inputs,
       inputs.initial_guess != nullptr ? *inputs.initial_guess : *inputs.input;
   const std::vector<PolePassage> passages =
       FindPolePassages(start, options.pole_passage_deg * M_PI / 180.0);
-  ToolPath best_guess = start;
-  int iterations = report->iterations;
-  double solve_time_s = report->solve_time_s;
-  int rerouted = 0;
+  ToolPath guess = start;
+  int rerouted = 0, in_windows = 0;
   for (const PolePassage& passage : passages) {
-    ToolPath guess = RerouteAroundPole(best_guess, passage, *inputs.cutter);
-    SmoothingInputs other_way = inputs;
-    other_way.initial_guess = &guess;
-    ToolPath candidate;
-    HighAccuracyReport candidate_report;
-    s = SmoothHighAccuracy(other_way, options, &candidate, &candidate_report);
+    bool turned = false, windowed = false;
+    s = TryTheOtherWay(inputs, options, passage, out, report, &guess, &turned, &windowed);
     if (!s.ok()) return s;
-    iterations += candidate_report.iterations;
-    solve_time_s += candidate_report.solve_time_s;
-    if (candidate_report.converged &&
-        candidate_report.final_cost < report->final_cost) {
-      *out = std::move(candidate);
-      *report = std::move(candidate_report);
-      best_guess = std::move(guess);
-      ++rerouted;
-    }
+    rerouted += turned;
+    in_windows += windowed;
   }
-  report->iterations = iterations;
-  report->solve_time_s = solve_time_s;
+  if (in_windows > 0) {
+    s = EvaluateFinalCost(inputs, options, *out, report);
+    if (!s.ok()) return s;
+  }
   report->pole_passages = static_cast<int>(passages.size());
   report->pole_passages_rerouted = rerouted;
+  report->pole_passages_in_windows = in_windows;
   return Status::Ok();
 }
 

@@ -51,7 +51,8 @@ Status SolveInWindows(const SmoothingInputs& inputs, const HighAccuracyOptions& 
     SmoothingInputs window = inputs;
     window.input = &window_input;
     window.initial_guess = &window_guess;
-    window.held_first = first > 0 ? kHeldAtSeam : 0;
+    window.held_first = first > 0 ? kHeldAtSeam : inputs.held_first;
+    window.held_last = end == n ? inputs.held_last : 0;
     ToolPath solved;
     HighAccuracyReport window_report;
     Status s = SolveWholeProblem(window, options, &solved, &window_report);

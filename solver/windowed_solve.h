@@ -11,7 +11,8 @@
 // towards the guess (measured: 0.06 mm undercut instead of 0.007 mm from
 // a spline guess). A window keeps its result from its first free pose on;
 // the next window then overwrites the overlap. Paths no longer than one
-// window are solved whole.
+// window are solved whole. Poses the inputs hold at the path's ends stay
+// held in the first and the last window.
 #ifndef TPOPT_SOLVER_WINDOWED_SOLVE_H_
 #define TPOPT_SOLVER_WINDOWED_SOLVE_H_
 

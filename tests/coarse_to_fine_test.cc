@@ -78,16 +78,21 @@ TEST(InterpolateStationsTest, ReproducesPosesLinearInArcLength) {
 
 // The direct solve, coarse to fine, and windowed without coarse levels,
 // on the same dense distorted impeller path: the same deviation.
-TEST(CoarseToFineSolveTest, CoarseToFineAndWindowsMatchTheDirectSolve) {
-  RuledSurface surface;
-  Machine machine;
-  ASSERT_NO_FATAL_FAILURE(testing::LoadImpellerBench(&surface, &machine));
+// A 900-pose CAM path on the impeller blade, distorted and noisy.
+void DistortedImpellerPath(const RuledSurface& surface, ToolPath* path) {
   FlankPathOptions g;
   g.poses = 900;
   g.uv_distortion = 0.03;
   g.axis_noise_deg = 0.3;
+  ASSERT_TRUE(GenerateFlankPath(surface, g, path).ok());
+}
+
+TEST(CoarseToFineSolveTest, CoarseToFineAndWindowsMatchTheDirectSolve) {
+  RuledSurface surface;
+  Machine machine;
+  ASSERT_NO_FATAL_FAILURE(testing::LoadImpellerBench(&surface, &machine));
   ToolPath input, guess;
-  ASSERT_TRUE(GenerateFlankPath(surface, g, &input).ok());
+  ASSERT_NO_FATAL_FAILURE(DistortedImpellerPath(surface, &input));
   SplineSmootherReport spline_report;
   ASSERT_TRUE(SmoothWithSplines(input, machine, &surface, *input.cutter, SplineSmootherOptions(),
                                 &guess, &spline_report)
@@ -121,6 +126,41 @@ TEST(CoarseToFineSolveTest, CoarseToFineAndWindowsMatchTheDirectSolve) {
     EXPECT_NEAR(d.max_overcut_mm, direct.max_overcut_mm, 1e-3) << k;
     EXPECT_NEAR(d.max_undercut_mm, direct.max_undercut_mm, 1e-3) << k;
     EXPECT_NEAR(d.rms_deviation_mm, direct.rms_deviation_mm, 3e-4) << k;
+  }
+}
+
+// Held poses (a window's seams, solver/pole_passage.h) stay exactly at
+// the guess through the coarse levels and the windows, however the path is
+// solved, while the poses next to them move.
+TEST(CoarseToFineSolveTest, HeldPosesKeepTheGuessAtEveryLevelAndWindow) {
+  RuledSurface surface;
+  Machine machine;
+  ASSERT_NO_FATAL_FAILURE(testing::LoadImpellerBench(&surface, &machine));
+  ToolPath input;
+  ASSERT_NO_FATAL_FAILURE(DistortedImpellerPath(surface, &input));
+  SmoothingInputs inputs{&input, &input, &surface, &*input.cutter, &machine};
+  inputs.held_first = 5;
+  inputs.held_last = 4;
+  // 900 -> 112 stations (held poses off the stride among them); windows of 300.
+  for (const int window_poses : {0, 300}) {
+    HighAccuracyOptions options;
+    options.coarse_poses = 100;
+    options.window_poses = window_poses;
+    options.max_iterations = 20;
+    ToolPath out;
+    HighAccuracyReport report;
+    ASSERT_TRUE(SmoothHighAccuracy(inputs, options, &out, &report).ok());
+    const size_t n = input.poses.size();
+    for (size_t i = 0; i < n; ++i) {
+      const bool held = i < inputs.held_first || i + inputs.held_last >= n;
+      const double moved = (out.poses[i].p_w_tip - input.poses[i].p_w_tip).norm() +
+                           (out.poses[i].a_w - input.poses[i].a_w).norm();
+      if (held) {
+        EXPECT_EQ(moved, 0.0) << "pose " << i << ", windows " << window_poses;
+      } else if (i == inputs.held_first || i + inputs.held_last + 1 == n) {
+        EXPECT_GT(moved, 1e-6) << "pose " << i << ", windows " << window_poses;
+      }
+    }
   }
 }
 
