@@ -101,6 +101,32 @@ TEST(SplineSmootherTest, SmoothingOutsideZonesStaysWithinTheTolerance) {
   EXPECT_GT(moved_outside, 100);
 }
 
+// The distorted CAM path on the impeller (U/V bump and 0.3 deg
+// axis noise): smoothing every pose at a 1 deg tolerance takes out the
+// noise and the bump together, down to the clean path's peaks (measured
+// 0.85x for A, 1.08x for C; the input's are over 300x).
+TEST(SplineSmootherTest, SmoothingEverywhereTakesOutNoiseAndDistortion) {
+  const Fixture f = Make();
+  FlankPathOptions g;
+  g.uv_distortion = 0.03;
+  g.axis_noise_deg = 0.3;
+  ToolPath cam;
+  ASSERT_TRUE(GenerateFlankPath(f.surface, g, &cam).ok());
+  SplineSmootherOptions options;
+  options.smooth_outside_zones = true;
+  options.angle_tolerance_deg = 1.0;
+  ToolPath out;
+  SplineSmootherReport report;
+  ASSERT_TRUE(
+      SmoothWithSplines(cam, f.machine, &f.surface, *cam.cutter, options, &out, &report).ok());
+  const MotionReport clean = Motion(f, f.clean), in = Motion(f, cam), smooth = Motion(f, out);
+  for (int axis : {kA, kC}) {
+    const double c = clean.axes[axis].peak_second_derivative_per_mm2;
+    EXPECT_GT(in.axes[axis].peak_second_derivative_per_mm2, 100 * c) << axis;
+    EXPECT_LT(smooth.axes[axis].peak_second_derivative_per_mm2, 2 * c) << axis;
+  }
+}
+
 TEST(SplineSmootherTest, IsDeterministicAndLeavesRapidsAlone) {
   Fixture f = Make();
   f.spiked.poses[0].rapid = true;
