@@ -80,8 +80,9 @@ DEFINE_int32(window_poses, 20000,
              "high_accuracy: longer problems are solved in overlapping windows of this many poses, "
              "which bounds the memory (0 = never).");
 DEFINE_double(pole_passage_deg, 5.0,
-              "high_accuracy: stretches whose axis passes within this angle of A = 0 while C turns "
-              "a quarter turn or more are also solved the other way round the pole (0 = never).");
+              "smooth: a pole passage is a stretch whose axis passes within this angle of A = 0 "
+              "while C turns a quarter turn or more; high_accuracy also solves each the other way "
+              "round the pole, spline may route it through the pole (0 = never).");
 DEFINE_int32(pole_window_path_poses, 5000,
              "high_accuracy: on a longer path each pole passage is solved the other way in a "
              "window round it, not by solving the whole path again (0 = always the whole path).");
@@ -95,6 +96,9 @@ DEFINE_double(zone_factor, 8.0,
               "spline: a zone is where |d2A/ds2|, |d2C/ds2| or |dK/ds| exceeds this x median.");
 DEFINE_int32(zone_padding, 3, "spline: poses added on each side of a zone.");
 DEFINE_bool(insert_transitions, false, "spline: insert a transition pose in every zone move.");
+DEFINE_double(pole_crossing_deg, 4.0,
+              "spline: a pole passage whose axes all lie within this angle of one plane through "
+              "A = 0 is put on that plane, so A changes sign there with C held (0 = never).");
 DEFINE_bool(accept_over_tolerance, false,
             "smooth: with a surface, write a high_accuracy result even where it is farther from "
             "the surface than --tolerance_mm (by default it is refused, exit 3, nothing written).");

@@ -64,6 +64,7 @@ DECLARE_int32(coarse_poses);
 DECLARE_int32(refine_iterations);
 DECLARE_double(pole_passage_deg);
 DECLARE_int32(pole_window_path_poses);
+DECLARE_double(pole_crossing_deg);
 DECLARE_int32(window_poses);
 DECLARE_int32(num_threads);
 DECLARE_double(angle_tolerance_deg);

@@ -19,6 +19,8 @@ Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptio
   spline->zone_padding = FLAGS_zone_padding;
   spline->insert_transitions = FLAGS_insert_transitions;
   spline->smooth_outside_zones = FLAGS_smooth_outside_zones;
+  spline->pole_passage_deg = FLAGS_pole_passage_deg;
+  spline->pole_crossing_deg = FLAGS_pole_crossing_deg;
   ha->tolerance_mm = FLAGS_tolerance_mm;
   ha->overcut_factor = FLAGS_overcut_factor;
   ha->w_deviation = FLAGS_w_deviation;

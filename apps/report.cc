@@ -94,7 +94,8 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
   report["spline"] = {{"zones", result.spline.zones},
                       {"poses_in_zones", result.spline.poses_in_zones},
                       {"poses_inserted", result.spline.poses_inserted},
-                      {"max_angle_change_deg", result.spline.max_angle_change_deg}};
+                      {"max_angle_change_deg", result.spline.max_angle_change_deg},
+                      {"pole_crossings", result.spline.pole_crossings}};
   report["feed_schedule"] = {{"passes", result.feed.passes},
                              {"moves_slowed", result.feed.moves_slowed},
                              {"min_feed_mm_per_min", result.feed.min_feed_mm_per_min},

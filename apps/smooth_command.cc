@@ -73,6 +73,10 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
                   ha.pole_passages, ha.pole_passages_in_windows, ha.pole_passages_rerouted);
     }
   }
+  if (result.spline.pole_crossings > 0) {
+    std::printf("  spline: %d pole passages routed through A = 0 (A changes sign, C held)\n",
+                result.spline.pole_crossings);
+  }
   if (result.feed.moves_slowed > 0) {
     std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",
                 result.feed.moves_slowed, result.feed.min_feed_mm_per_min);

@@ -90,10 +90,11 @@ void BM_PolePassages(benchmark::State& state) {
       path.poses.back().rapid = k > 0 && i == 0;
     }
   }
+  SplineSmootherOptions guess_options;  // as the pipeline makes it for high_accuracy
+  guess_options.pole_crossing_deg = 0.0;
   ToolPath guess;
   SplineSmootherReport spline_report;
-  SmoothWithSplines(path, machine, &surface, *path.cutter, SplineSmootherOptions(), &guess,
-                    &spline_report);
+  SmoothWithSplines(path, machine, &surface, *path.cutter, guess_options, &guess, &spline_report);
   HighAccuracyOptions options;
   options.pole_window_path_poses = state.range(0) == 0 ? 0 : 5000;
   for (auto _ : state) {

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include <glog/logging.h>
 
 #include "model/rail_projection.h"
+#include "solver/pole_crossing.h"
 #include "solver/smoothing_spline.h"
 
 namespace tpopt {
@@ -14,6 +16,9 @@ namespace {
 
 constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr double kMinStepMm = 1e-6;
+// A pole passage this close to its plane through +Z already crosses the
+// pole: a nanoradian, far above round-off, far below any CAM error.
+constexpr double kOnPlaneRad = 1e-9;
 
 double Median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -128,6 +133,10 @@ bool SplineSmootherOptions::IsValid(std::string* why) const {
     err << "angle tolerance " << angle_tolerance_deg << " deg must be > 0";
   } else if (!(zone_weight > 0 && zone_weight <= 1)) {
     err << "zone weight " << zone_weight << " must be in (0, 1]";
+  } else if (!(pole_passage_deg >= 0 && pole_passage_deg < 90)) {
+    err << "pole passage angle " << pole_passage_deg << " deg must be in [0, 90)";
+  } else if (!(pole_crossing_deg >= 0) || !std::isfinite(pole_crossing_deg)) {
+    err << "pole crossing bound " << pole_crossing_deg << " deg must be >= 0";
   } else {
     return true;
   }
@@ -145,6 +154,7 @@ struct SmoothingJob {
   const Cutter& cutter;
   const SplineSmootherOptions& options;
   std::vector<double> u;  // contact ruling of every pose of `in`; empty without a surface
+  std::vector<PolePassage> through_pole;  // passages of `in` routed through the pole
 };
 
 // Arc length of the tip along poses[0, n), each step at least kMinStepMm.
@@ -157,13 +167,22 @@ std::vector<double> TipArcLength(const ToolPose* poses, size_t n) {
 }
 
 // Zones of abrupt rotary acceleration and, with a surface, of fast
-// Gaussian-curvature change (u: the contact rulings), padded.
-std::vector<bool> FindZones(const std::vector<double>& s, const std::vector<double>& a,
-                            const std::vector<double>& c, const RuledSurface* surface,
-                            const double* u, const SplineSmootherOptions& options,
+// Gaussian-curvature change (u: the contact rulings), and the passages
+// routed through the pole (poses first.. of job.in), padded.
+std::vector<bool> FindZones(const SmoothingJob& job, size_t first, const std::vector<double>& s,
+                            const std::vector<double>& a, const std::vector<double>& c,
                             SplineSmootherReport* report) {
+  const SplineSmootherOptions& options = job.options;
+  const RuledSurface* const surface = job.surface;
+  const double* const u = surface != nullptr ? job.u.data() + first : nullptr;
   const size_t n = s.size();
   std::vector<bool> zone(n, false);
+  // The step onto the plane at a passage's ends is for the spline to bridge.
+  for (const PolePassage& passage : job.through_pole) {
+    for (size_t i = std::max(passage.first, first); i <= passage.last && i < first + n; ++i) {
+      zone[i - first] = true;
+    }
+  }
   MarkAbove(SecondDerivative(s, a), options.zone_factor, &zone);
   MarkAbove(SecondDerivative(s, c), options.zone_factor, &zone);
   if (surface != nullptr) {
@@ -186,19 +205,18 @@ std::vector<bool> FindZones(const std::vector<double>& s, const std::vector<doub
 // out of the zone to hold the curves to them. On the impeller's CAM path
 // with 0.3 deg noise at a 1 deg tolerance, zones on the raw angles left the
 // peak d2C/ds2 at 29x the clean path's; on the fit, 1.1x.
-Status FindZonesOfRun(const std::vector<double>& s, const std::vector<double>& a,
-                      const std::vector<double>& c, const RuledSurface* surface, const double* u,
-                      const SplineSmootherOptions& options, SplineSmootherReport* report,
-                      std::vector<bool>* zone) {
-  if (!options.smooth_outside_zones) {
-    *zone = FindZones(s, a, c, surface, u, options, report);
+Status FindZonesOfRun(const SmoothingJob& job, size_t first, const std::vector<double>& s,
+                      const std::vector<double>& a, const std::vector<double>& c,
+                      SplineSmootherReport* report, std::vector<bool>* zone) {
+  if (!job.options.smooth_outside_zones) {
+    *zone = FindZones(job, first, s, a, c, report);
     return Status::Ok();
   }
   SmoothingSpline a_fit, c_fit;
   const Status st = SmoothingSpline::FitEachWithinTolerance(
-      s, {&a, &c}, {}, options.angle_tolerance_deg / kRadToDeg, {&a_fit, &c_fit});
+      s, {&a, &c}, {}, job.options.angle_tolerance_deg / kRadToDeg, {&a_fit, &c_fit});
   if (!st.ok()) return st;
-  *zone = FindZones(s, a_fit.values(), c_fit.values(), surface, u, options, report);
+  *zone = FindZones(job, first, s, a_fit.values(), c_fit.values(), report);
   return Status::Ok();
 }
 
@@ -219,7 +237,7 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
   const double* const u = job.surface != nullptr ? job.u.data() + first : nullptr;
   const std::vector<double> s = TipArcLength(poses, n);
   std::vector<bool> zone;
-  st = FindZonesOfRun(s, a, c, job.surface, u, options, report, &zone);
+  st = FindZonesOfRun(job, first, s, a, c, report, &zone);
   if (!st.ok()) return st;
   std::vector<double> weights(n, 1.0);
   for (size_t i = 0; i < n; ++i) {
@@ -270,6 +288,78 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
   return Status::Ok();
 }
 
+// [first, end) of the cutting run that holds pose i of `path`: a run
+// starts at a rapid target (or the path's start).
+std::pair<size_t, size_t> RunAround(const ToolPath& path, size_t i) {
+  size_t first = i, end = i + 1;
+  while (first > 0 && !path.poses[first].rapid) --first;
+  while (end < path.poses.size() && !path.poses[end].rapid) ++end;
+  return {first, end};
+}
+
+// Whether the machine takes `passage` of `routed` (put on a plane through
+// +Z) with C held, which it does by a sign change of A where the pole is
+// crossed; where the A travel has no room for the other sign it must turn
+// C half a turn there instead, which is worse than going round.
+bool MachineHoldsC(const ToolPath& routed, const Machine& machine, const PolePassage& passage) {
+  const auto [first, end] = RunAround(routed, passage.first);
+  std::vector<double> a, c;
+  if (!machine.AssignRotaryAngles(routed, first, end, &a, &c).ok()) return false;
+  for (size_t i = passage.first; i <= passage.last; ++i) {
+    // On the plane C is the plane's azimuth on one branch and half a turn
+    // from it on the other; a quarter turn tells the two apart.
+    if (std::abs(c[i - first] - c[passage.first - first]) >= M_PI / 2) return false;
+  }
+  return true;
+}
+
+// Puts each pole passage of `in` whose axes lie within
+// options.pole_crossing_deg of a plane through +Z on that plane, where the
+// machine can take it so, leaving rapids and the poses before them as they
+// are. Returns whether any was: then `routed` is `in` with those passages
+// moved, and `through_pole` lists them.
+bool RouteThroughPoles(const ToolPath& in, const Machine& machine,
+                       const SplineSmootherOptions& options, ToolPath* routed,
+                       std::vector<PolePassage>* through_pole, SplineSmootherReport* report) {
+  if (options.pole_passage_deg <= 0 || options.pole_crossing_deg <= 0) return false;
+  const size_t n = in.poses.size();
+  for (PolePassage passage : FindPolePassages(in, options.pole_passage_deg / kRadToDeg)) {
+    const bool rapid_target = in.poses[passage.first].rapid;
+    const bool before_rapid = passage.last + 1 < n && in.poses[passage.last + 1].rapid;
+    if (passage.last - passage.first < size_t{rapid_target} + size_t{before_rapid}) continue;
+    passage.first += rapid_target;
+    passage.last -= before_rapid;
+    const PoleCrossing crossing = FitPoleCrossing(in, passage);
+    const double miss_deg = crossing.miss_rad * kRadToDeg;
+    // A passage already on its plane (to round-off) crosses the pole as it
+    // is; making it a zone would only move poses that need no change.
+    if (crossing.miss_rad < kOnPlaneRad) continue;
+    if (miss_deg > options.pole_crossing_deg) {
+      VLOG(1) << "spline: pole passage at poses " << passage.first << "-" << passage.last
+              << " lies up to " << miss_deg << " deg off a plane through A = 0, more than "
+              << options.pole_crossing_deg << " deg; left to go round the pole";
+      continue;
+    }
+    if (through_pole->empty()) *routed = in;
+    RouteThroughPole(crossing, routed);
+    if (!MachineHoldsC(*routed, machine, passage)) {
+      LOG(WARNING) << "spline: the A travel [" << machine.limits[kA].min * kRadToDeg << ", "
+                   << machine.limits[kA].max * kRadToDeg << "] deg has no room for the sign "
+                   << "change of A that crosses the pole at poses " << passage.first << "-"
+                   << passage.last << "; the passage keeps going round it";
+      std::copy(in.poses.begin() + passage.first, in.poses.begin() + passage.last + 1,
+                routed->poses.begin() + passage.first);
+      continue;
+    }
+    VLOG(1) << "spline: pole passage at poses " << passage.first << "-" << passage.last
+            << " routed through A = 0 at C = " << crossing.plane_c_rad * kRadToDeg
+            << " deg, axes moved by up to " << miss_deg << " deg";
+    through_pole->push_back(passage);
+    ++report->pole_crossings;
+  }
+  return !through_pole->empty();
+}
+
 }  // namespace
 
 Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const RuledSurface* surface,
@@ -278,7 +368,12 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   std::string why;
   if (!options.IsValid(&why)) return Status::Error("spline options: " + why);
   *report = SplineSmootherReport();
-  SmoothingJob job{in, machine, surface, cutter, options, {}};
+  // The path is copied only when a passage is routed through the pole.
+  ToolPath routed;
+  std::vector<PolePassage> through_pole;
+  const ToolPath& source =
+      RouteThroughPoles(in, machine, options, &routed, &through_pole, report) ? routed : in;
+  SmoothingJob job{source, machine, surface, cutter, options, {}, std::move(through_pole)};
   // Projected once for the whole path: every run starts at a rapid (or the
   // path's start), where the projection searches the whole rail afresh.
   if (surface != nullptr) job.u = ProjectPathOntoRail(surface->rail(0), in);

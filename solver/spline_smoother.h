@@ -19,6 +19,11 @@
 //     tip = C1(u_i) + R unit(n - (n.a) a), with u_i the contact ruling of the
 //     input pose and n the surface normal there (without a surface the tip
 //     stays).
+// Before step 1, a pole passage (solver/pole_passage.h) whose axes all lie
+// within `pole_crossing_deg` of one plane through +Z is put on that plane
+// (solver/pole_crossing.h), so that the unwrap crosses the pole by a sign
+// change of A with C held instead of swinging C by half a turn, and the
+// passage is made a zone.
 // Rapids and the poses next to them are never changed.
 #ifndef TPOPT_SOLVER_SPLINE_SMOOTHER_H_
 #define TPOPT_SOLVER_SPLINE_SMOOTHER_H_
@@ -48,6 +53,19 @@ struct SplineSmootherOptions {
   double zone_weight = 1e-4;
   // Insert a pose at the middle of every move inside a zone.
   bool insert_transitions = false;
+  // Pole passages: stretches whose axis stays within this angle of +Z while
+  // C turns a quarter turn or more (as HighAccuracyOptions::
+  // pole_passage_deg). Degrees, [0, 90); 0 = never look for them.
+  double pole_passage_deg = 5.0;
+  // Largest angle any axis of a passage may be from the fitted plane through
+  // +Z for the passage to be routed straight through the pole, which moves
+  // each axis by its angle from the plane. Degrees, >= 0; 0 = never. The
+  // default admits the hypar's U/V-distorted path, 3.4 deg off the plane its
+  // clean path crosses on (the closest approach to the pole is 0.74 deg, but
+  // the bump's axis error takes the passage further off the plane on its way
+  // round), and stays below the 5 deg passage angle, so that a passage circling
+  // the pole near that angle, which is no near miss, is never flattened.
+  double pole_crossing_deg = 4.0;
 
   bool IsValid(std::string* why) const;
 };
@@ -57,6 +75,7 @@ struct SplineSmootherReport {
   int poses_in_zones = 0;
   int poses_inserted = 0;
   double max_angle_change_deg = 0.0;  // largest |dA| or |dC| applied
+  int pole_crossings = 0;             // passages routed through the pole
 };
 
 // `surface` may be null (no tangency rebuild, no curvature zones).

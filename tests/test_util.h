@@ -116,6 +116,12 @@ inline void LoadImpellerBench(RuledSurface* surface, Machine* machine) {
   ASSERT_TRUE(ReadMachineJson(SourcePath("data/machines/jcde2022_ac.json"), machine).ok());
 }
 
+// The hypar, whose flank path crosses the A = 0 pole, on the jcde2022 machine.
+inline void LoadHyparBench(RuledSurface* surface, Machine* machine) {
+  ASSERT_TRUE(ReadSurfaceJson(SourcePath("data/surfaces/hypar.json"), surface).ok());
+  ASSERT_TRUE(ReadMachineJson(SourcePath("data/machines/jcde2022_ac.json"), machine).ok());
+}
+
 }  // namespace tpopt::testing
 
 #endif  // TPOPT_TESTS_TEST_UTIL_H_
