@@ -35,11 +35,13 @@ Fixture Make() {
   return f;
 }
 
-MotionReport Motion(const Fixture& f, const ToolPath& path) {
+MotionReport Motion(const Machine& machine, const ToolPath& path) {
   std::vector<JointVector> joints;
-  EXPECT_TRUE(f.machine.AssignJoints(path, &joints).ok());
-  return EvaluateMotion(f.machine, path, joints, MotionOptions());
+  EXPECT_TRUE(machine.AssignJoints(path, &joints).ok());
+  return EvaluateMotion(machine, path, joints, MotionOptions());
 }
+
+MotionReport Motion(const Fixture& f, const ToolPath& path) { return Motion(f.machine, path); }
 
 TEST(SplineSmootherTest, RemovesAnInjectedSpike) {
   const Fixture f = Make();
@@ -101,29 +103,46 @@ TEST(SplineSmootherTest, SmoothingOutsideZonesStaysWithinTheTolerance) {
   EXPECT_GT(moved_outside, 100);
 }
 
-// The distorted CAM path on the impeller (U/V bump and 0.3 deg
-// axis noise): smoothing every pose at a 1 deg tolerance takes out the
-// noise and the bump together, down to the clean path's peaks (measured
-// 0.85x for A, 1.08x for C; the input's are over 300x).
+// The distorted CAM path (U/V bump and 0.3 deg axis noise) on each
+// shared surface: smoothing every pose at a 2 deg tolerance takes out the
+// noise and the bump together, down to twice the clean SPO path's peak
+// d2/ds2 or better. The hypar's clean path keeps C exactly constant (its
+// rulings lie in planes through the pole), so there "twice" is zero and the
+// bound is a numerical zero, 1e-4 deg/mm^2 (measured 1.5e-5, from 3634).
+// Measured ratios: jcde2022 0.03 (A), 0.06 (C); impeller 0.69, 0.94;
+// hypar A 0.60.
 TEST(SplineSmootherTest, SmoothingEverywhereTakesOutNoiseAndDistortion) {
-  const Fixture f = Make();
-  FlankPathOptions g;
-  g.uv_distortion = 0.03;
-  g.axis_noise_deg = 0.3;
-  ToolPath cam;
-  ASSERT_TRUE(GenerateFlankPath(f.surface, g, &cam).ok());
   SplineSmootherOptions options;
   options.smooth_outside_zones = true;
-  options.angle_tolerance_deg = 1.0;
-  ToolPath out;
-  SplineSmootherReport report;
-  ASSERT_TRUE(
-      SmoothWithSplines(cam, f.machine, &f.surface, *cam.cutter, options, &out, &report).ok());
-  const MotionReport clean = Motion(f, f.clean), in = Motion(f, cam), smooth = Motion(f, out);
-  for (int axis : {kA, kC}) {
-    const double c = clean.axes[axis].peak_second_derivative_per_mm2;
-    EXPECT_GT(in.axes[axis].peak_second_derivative_per_mm2, 100 * c) << axis;
-    EXPECT_LT(smooth.axes[axis].peak_second_derivative_per_mm2, 2 * c) << axis;
+  options.angle_tolerance_deg = 2.0;
+  const double numerical_zero = 1e-4 * kDeg;
+  for (const char* name : {"jcde2022", "hypar", "impeller_blade"}) {
+    RuledSurface surface;
+    Machine machine;
+    ASSERT_TRUE(ReadSurfaceJson(
+                    testing::SourcePath(std::string("data/surfaces/") + name + ".json"), &surface)
+                    .ok());
+    ASSERT_TRUE(
+        ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &machine).ok());
+    FlankPathOptions g;
+    ToolPath clean, cam, out;
+    ASSERT_TRUE(GenerateFlankPath(surface, g, &clean).ok());
+    g.uv_distortion = 0.03;
+    g.axis_noise_deg = 0.3;
+    ASSERT_TRUE(GenerateFlankPath(surface, g, &cam).ok());
+    SplineSmootherReport report;
+    ASSERT_TRUE(
+        SmoothWithSplines(cam, machine, &surface, *cam.cutter, options, &out, &report).ok());
+    const MotionReport clean_motion = Motion(machine, clean), in = Motion(machine, cam),
+                       smooth = Motion(machine, out);
+    for (int axis : {kA, kC}) {
+      const double c = clean_motion.axes[axis].peak_second_derivative_per_mm2;
+      EXPECT_GT(in.axes[axis].peak_second_derivative_per_mm2, 10 * c + numerical_zero)
+          << name << " axis " << axis;
+      EXPECT_LT(smooth.axes[axis].peak_second_derivative_per_mm2,
+                std::max(2 * c, numerical_zero))
+          << name << " axis " << axis;
+    }
   }
 }
 

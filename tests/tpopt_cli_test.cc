@@ -131,7 +131,7 @@ TEST(TpoptCliTest, SmoothWritesPathAndSideBySideReport) {
                              "--axis_noise_deg=0.3 --out=" + cam))
                 .exit_code,
             0);
-  for (const std::string preset : {"impeller_high_accuracy", "fast_spline"}) {
+  for (const std::string preset : {"impeller_high_accuracy", "fast_spline", "denoise_spline"}) {
     const std::string out = dir.File(preset + ".cls"), report = dir.File(preset + ".json");
     const auto r = RunCommand(Tpopt("smooth --flagfile=" + SourcePath("data/presets/" + preset +
                                                                        ".flags") +
