@@ -119,14 +119,18 @@ struct WindowSolve {
   HighAccuracyReport report;
 };
 
+std::vector<size_t> WindowIndices(const PassageWindow& w) {
+  std::vector<size_t> indices(w.last - w.first + 1);
+  std::iota(indices.begin(), indices.end(), w.first);
+  return indices;
+}
+
 // Solves poses [w.first, w.last] of the path from `guess` (the window's
 // poses), its seams held at the guess where the window does not reach the
 // path's ends.
 Status SolveWindow(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
                    const PassageWindow& w, const ToolPath& guess, WindowSolve* out) {
-  std::vector<size_t> indices(w.last - w.first + 1);
-  std::iota(indices.begin(), indices.end(), w.first);
-  const ToolPath window_input = SubPath(*inputs.input, indices);
+  const ToolPath window_input = SubPath(*inputs.input, WindowIndices(w));
   SmoothingInputs window = inputs;
   window.input = &window_input;
   window.initial_guess = &guess;
@@ -153,53 +157,39 @@ Status EvaluateFinalCost(const SmoothingInputs& inputs, const HighAccuracyOption
   return Status::Ok();
 }
 
-// The whole path solved from the guess with `passage` taken the other way.
-Status SolveWholeOtherWay(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
-                          const ToolPath& rerouted, WindowSolve* out) {
+// The whole path solved again from `other_guess` (the guess with a passage
+// taken the other way); kept, with `solved`, `report` and `guess` updated,
+// when its cost is lower. Iterations and times add up either way.
+Status TryWholePath(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                    ToolPath other_guess, ToolPath* solved, HighAccuracyReport* report,
+                    ToolPath* guess, bool* rerouted) {
   SmoothingInputs other_way = inputs;
-  other_way.initial_guess = &rerouted;
-  return SmoothHighAccuracy(other_way, options, &out->poses, &out->report);
-}
-
-// Tries `passage` the other way round on `solved` (the best path so far,
-// whose report is `report`), from `guess` (the initial guess so far). On a
-// path longer than the passage's window, only the window is solved again,
-// both ways from the current solution, and the better is kept: the cost of
-// a passage stays bounded however long the path. Sets `rerouted` when the
-// other way won (then `solved` and `guess` are updated) and `windowed` when
-// only a window was solved (then `report`'s costs are stale).
-Status TryTheOtherWay(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
-                      const PolePassage& passage, ToolPath* solved, HighAccuracyReport* report,
-                      ToolPath* guess, bool* rerouted, bool* windowed) {
-  *rerouted = false;
-  *windowed = false;
-  ToolPath other_guess = RerouteAroundPole(*guess, passage, *inputs.cutter);
-  const PassageWindow w = WindowAround(passage, solved->poses.size(), options);
-  if (w.whole_path) {
-    WindowSolve other;
-    Status s = SolveWholeOtherWay(inputs, options, other_guess, &other);
-    if (!s.ok()) return s;
-    report->iterations += other.report.iterations;
-    report->solve_time_s += other.report.solve_time_s;
-    if (!other.report.converged || !(other.report.final_cost < report->final_cost)) {
-      return Status::Ok();
-    }
-    const int iterations = report->iterations;
-    const double time_s = report->solve_time_s;
+  other_way.initial_guess = &other_guess;
+  WindowSolve other;
+  Status s = SmoothHighAccuracy(other_way, options, &other.poses, &other.report);
+  if (!s.ok()) return s;
+  const int iterations = report->iterations + other.report.iterations;
+  const double time_s = report->solve_time_s + other.report.solve_time_s;
+  if (other.report.converged && other.report.final_cost < report->final_cost) {
     *solved = std::move(other.poses);
     *report = std::move(other.report);
-    report->iterations = iterations;
-    report->solve_time_s = time_s;
     *guess = std::move(other_guess);
     *rerouted = true;
-    return Status::Ok();
   }
-  *windowed = true;
-  // The window's guesses: the solution so far, and the same with the
-  // passage's poses from the rerouted guess.
-  std::vector<size_t> indices(w.last - w.first + 1);
-  std::iota(indices.begin(), indices.end(), w.first);
-  const ToolPath keep_guess = SubPath(*solved, indices);
+  report->iterations = iterations;
+  report->solve_time_s = time_s;
+  return Status::Ok();
+}
+
+// Window `w` round `passage` solved again both ways from `solved` (the
+// path so far), the passage's poses of the other way from `other_guess`;
+// the cheaper window is spliced into `solved`. Costs of the same window
+// problem compare; they do not add up to the whole path's (the weights are
+// normalised by the problem's length), so `report`'s costs go stale.
+Status TryWindow(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                 const PolePassage& passage, const PassageWindow& w, ToolPath other_guess,
+                 ToolPath* solved, HighAccuracyReport* report, ToolPath* guess, bool* rerouted) {
+  const ToolPath keep_guess = SubPath(*solved, WindowIndices(w));
   ToolPath turn_guess = keep_guess;
   for (size_t i = passage.first; i <= passage.last; ++i) {
     turn_guess.poses[i - w.first].p_w_tip = other_guess.poses[i].p_w_tip;
@@ -212,20 +202,38 @@ Status TryTheOtherWay(const SmoothingInputs& inputs, const HighAccuracyOptions& 
   report->iterations += keep.report.iterations + turn.report.iterations;
   report->solve_time_s += keep.report.solve_time_s + turn.report.solve_time_s;
   if (!keep.report.converged || !turn.report.converged) return Status::Ok();
-  // Costs of the same window problem compare; they do not add up to the
-  // whole path's (the weights are normalised by the problem's length), so
-  // the caller evaluates the whole again at the end.
   const bool turn_wins = turn.report.final_cost < keep.report.final_cost;
-  const WindowSolve& winner = turn_wins ? turn : keep;
-  for (size_t i = 0; i < indices.size(); ++i) {
-    solved->poses[w.first + i].p_w_tip = winner.poses.poses[i].p_w_tip;
-    solved->poses[w.first + i].a_w = winner.poses.poses[i].a_w;
+  const ToolPath& winner = turn_wins ? turn.poses : keep.poses;
+  for (size_t i = 0; i < winner.poses.size(); ++i) {
+    solved->poses[w.first + i].p_w_tip = winner.poses[i].p_w_tip;
+    solved->poses[w.first + i].a_w = winner.poses[i].a_w;
   }
   if (turn_wins) {
     *guess = std::move(other_guess);
     *rerouted = true;
   }
   return Status::Ok();
+}
+
+// Tries `passage` the other way round on `solved` (the best path so far,
+// whose report is `report`), from `guess` (the initial guess so far): the
+// whole path again, or on a path longer than the passage's window only the
+// window, so that a passage's cost stays bounded however long the path.
+// Sets `rerouted` when the other way won (then `solved` and `guess` are
+// updated) and `windowed` when only a window was solved (then `report`'s
+// costs are stale).
+Status TryTheOtherWay(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                      const PolePassage& passage, ToolPath* solved, HighAccuracyReport* report,
+                      ToolPath* guess, bool* rerouted, bool* windowed) {
+  *rerouted = false;
+  ToolPath other_guess = RerouteAroundPole(*guess, passage, *inputs.cutter);
+  const PassageWindow w = WindowAround(passage, solved->poses.size(), options);
+  *windowed = !w.whole_path;
+  if (w.whole_path) {
+    return TryWholePath(inputs, options, std::move(other_guess), solved, report, guess, rerouted);
+  }
+  return TryWindow(inputs, options, passage, w, std::move(other_guess), solved, report, guess,
+                   rerouted);
 }
 
 }  // namespace
