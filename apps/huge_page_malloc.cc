@@ -13,6 +13,7 @@ namespace tpopt {
 namespace {
 
 constexpr char kTunable[] = "glibc.malloc.hugetlb";
+constexpr char kTunableOn[] = "glibc.malloc.hugetlb=1";
 // Set on the restarted process, so that it never restarts again (glibc
 // drops GLIBC_TUNABLES in secure mode, and a loop must be impossible).
 constexpr char kRestartMarker[] = "TPOPT_HUGE_PAGES_RESTARTED";
@@ -54,7 +55,7 @@ bool ShouldRestartForHugePages(const char* glibc_tunables, const char* tpopt_hug
 bool HugePageMallocActive() {
   const char* tunables = std::getenv("GLIBC_TUNABLES");
   return !RunsUnderAddressSanitizer() && tunables != nullptr &&
-         std::strstr(tunables, "glibc.malloc.hugetlb=1") != nullptr;
+         std::strstr(tunables, kTunableOn) != nullptr;
 }
 
 void RestartWithHugePageMalloc(char** argv) {
@@ -64,7 +65,7 @@ void RestartWithHugePageMalloc(char** argv) {
                                  std::getenv(kRestartMarker), ReadThpMode().c_str())) {
     return;
   }
-  std::string value = std::string(kTunable) + "=1";
+  std::string value = kTunableOn;
   if (tunables != nullptr && *tunables != '\0') value = std::string(tunables) + ":" + value;
   if (setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0 || setenv(kRestartMarker, "1", 1) != 0) {
     return;

@@ -83,18 +83,11 @@ void BM_PolePassages(benchmark::State& state) {
   g.axis_noise_deg = 0.3;
   ToolPath pass;
   GenerateFlankPath(surface, g, &pass);
-  ToolPath path = WithoutPoses(pass);
-  for (int k = 0; k < 7; ++k) {
-    for (size_t i = 0; i < pass.poses.size(); ++i) {
-      path.poses.push_back(pass.poses[i]);
-      path.poses.back().rapid = k > 0 && i == 0;
-    }
-  }
-  SplineSmootherOptions guess_options;  // as the pipeline makes it for high_accuracy
-  guess_options.pole_crossing_deg = 0.0;
+  const ToolPath path = RepeatedPasses(pass, 7);
   ToolPath guess;
   SplineSmootherReport spline_report;
-  SmoothWithSplines(path, machine, &surface, *path.cutter, guess_options, &guess, &spline_report);
+  SmoothWithSplines(path, machine, &surface, *path.cutter,
+                    ForHighAccuracyGuess(SplineSmootherOptions()), &guess, &spline_report);
   HighAccuracyOptions options;
   options.pole_window_path_poses = state.range(0) == 0 ? 0 : 5000;
   for (auto _ : state) {

@@ -1,5 +1,6 @@
 #include "model/path_generator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -111,6 +112,18 @@ Status GenerateFlankPath(const RuledSurface& surface, const FlankPathOptions& o,
   out.title = title.str();
   *path = std::move(out);
   return Status::Ok();
+}
+
+ToolPath RepeatedPasses(const ToolPath& pass, int passes) {
+  ToolPath out = WithoutPoses(pass);
+  out.poses.reserve(pass.poses.size() * static_cast<size_t>(std::max(passes, 0)));
+  for (int k = 0; k < passes; ++k) {
+    for (size_t i = 0; i < pass.poses.size(); ++i) {
+      out.poses.push_back(pass.poses[i]);
+      out.poses.back().rapid = k > 0 && i == 0;
+    }
+  }
+  return out;
 }
 
 }  // namespace tpopt

@@ -58,6 +58,10 @@ double UvDistortion(const FlankPathOptions& options, double u);
 Status GenerateFlankPath(const RuledSurface& surface, const FlankPathOptions& options,
                          ToolPath* path);
 
+// `passes` copies of `pass` one after another, as a multi-pass program
+// runs them: a rapid to the start of each pass but the first.
+ToolPath RepeatedPasses(const ToolPath& pass, int passes);
+
 }  // namespace tpopt
 
 #endif  // TPOPT_MODEL_PATH_GENERATOR_H_

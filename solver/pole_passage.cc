@@ -6,6 +6,7 @@
 
 #include "model/machine.h"
 #include "solver/coarse_to_fine.h"
+#include "solver/windowed_solve.h"
 
 namespace tpopt {
 namespace {
@@ -92,9 +93,6 @@ namespace {
 // stencils carry a change of side along the path before it dies out. At
 // least the passage's own length, and at least kMinMarginPoses.
 constexpr size_t kMinMarginPoses = 100;
-// Poses held at a window's seams: the widest stencil (third differences)
-// spans four poses (as solver/windowed_solve.cc holds them).
-constexpr size_t kHeldAtSeam = 3;
 
 // The stretch of the path a passage's re-solve works on.
 struct PassageWindow {

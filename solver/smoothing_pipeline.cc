@@ -81,15 +81,8 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   if (s.ok()) s = WithinTravel(*job.machine, *job.input);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
 
-  SplineSmootherOptions spline_options = settings.spline;
-  // The Ceres problem keeps the input's poses one for one.
-  if (high_accuracy) spline_options.insert_transitions = false;
-  // Nor does it start from a guess routed through the pole: from there the
-  // hypar's distorted paths settle where its clean path does, 0.013 mm
-  // short of the surface at the pole, beyond the 0.01 mm tolerance (the
-  // result is refused), while the guess that goes round the pole, solved
-  // both ways round (solver/pole_passage.h), comes within 0.0091 mm.
-  if (high_accuracy) spline_options.pole_crossing_deg = 0.0;
+  const SplineSmootherOptions spline_options =
+      high_accuracy ? ForHighAccuracyGuess(settings.spline) : settings.spline;
   ToolPath spline_path;
   stage("spline smoothing");
   s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,

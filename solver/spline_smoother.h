@@ -78,6 +78,11 @@ struct SplineSmootherReport {
   int pole_crossings = 0;             // passages routed through the pole
 };
 
+// `options` as the high-accuracy mode's initial guess takes them: no
+// inserted poses (the Ceres problem keeps the input's poses one for one)
+// and no passage routed through the pole (see spline_smoother.cc).
+SplineSmootherOptions ForHighAccuracyGuess(SplineSmootherOptions options);
+
 // `surface` may be null (no tangency rebuild, no curvature zones).
 Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const RuledSurface* surface,
                          const Cutter& cutter, const SplineSmootherOptions& options,

@@ -11,10 +11,6 @@
 namespace tpopt {
 namespace {
 
-// Poses held at a seam: the widest stencil (third differences) spans four
-// poses, so three held poses give every stencil at the seam a free pose.
-constexpr size_t kHeldAtSeam = 3;
-
 void Accumulate(const HighAccuracyReport& window, HighAccuracyReport* total) {
   total->converged = total->converged && window.converged;
   total->message = window.message;

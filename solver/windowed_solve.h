@@ -16,11 +16,17 @@
 #ifndef TPOPT_SOLVER_WINDOWED_SOLVE_H_
 #define TPOPT_SOLVER_WINDOWED_SOLVE_H_
 
+#include <cstddef>
+
 #include "model/status.h"
 #include "model/tool_path.h"
 #include "solver/ceres_smoother.h"
 
 namespace tpopt {
+
+// Poses held at a seam: the widest stencil (third differences) spans four
+// poses, so three held poses give every stencil at the seam a free pose.
+constexpr size_t kHeldAtSeam = 3;
 
 // As SolveWholeProblem (same preconditions), windowed when the path has
 // more than options.window_poses poses. The report sums the windows'

@@ -145,5 +145,25 @@ TEST(PathGeneratorTest, RejectsBadOptionsNamingTheValue) {
   EXPECT_FALSE(GenerateFlankPath(hypar, o, &path).ok());
 }
 
+TEST(PathGeneratorTest, RepeatedPassesRunOneAfterAnotherWithARapidBetween) {
+  ToolPath pass;
+  for (int i = 0; i < 4; ++i) {
+    ToolPose pose;
+    pose.p_w_tip = Eigen::Vector3d(i, 0, 0);
+    pose.rapid = i == 0;  // a pass may start with a rapid of its own
+    pass.poses.push_back(pose);
+  }
+  pass.title = "pass";
+  const ToolPath three = RepeatedPasses(pass, 3);
+  ASSERT_EQ(three.poses.size(), 12u);
+  EXPECT_EQ(three.title, "pass");
+  for (size_t i = 0; i < three.poses.size(); ++i) {
+    EXPECT_EQ(three.poses[i].p_w_tip, pass.poses[i % 4].p_w_tip) << i;
+    // The path starts as a cut; each later pass starts with a rapid.
+    EXPECT_EQ(three.poses[i].rapid, i == 4 || i == 8) << i;
+  }
+  EXPECT_TRUE(RepeatedPasses(pass, 0).poses.empty());
+}
+
 }  // namespace
 }  // namespace tpopt

@@ -123,14 +123,12 @@ TEST(SmoothBothWaysRoundPolesTest, HyparCamPathTakesTheSurfacesSideOfThePole) {
   g.axis_noise_deg = 0.3;
   ToolPath cam;
   ASSERT_TRUE(GenerateFlankPath(surface, g, &cam).ok());
-  // The guess as the pipeline makes it for high_accuracy: not routed
-  // through the pole (solver/smoothing_pipeline.cc says why).
-  SplineSmootherOptions guess_options;
-  guess_options.pole_crossing_deg = 0.0;
+  // The guess as the pipeline makes it for high_accuracy.
   ToolPath guess;
   SplineSmootherReport spline_report;
   ASSERT_TRUE(SmoothWithSplines(cam, machine, &surface, *cam.cutter,
-                                guess_options, &guess, &spline_report)
+                                ForHighAccuracyGuess(SplineSmootherOptions()),
+                                &guess, &spline_report)
                   .ok());
   const SmoothingInputs inputs{&cam, &guess, &surface, &*cam.cutter, &machine};
   const HighAccuracyOptions options;
@@ -182,18 +180,11 @@ TEST(SmoothBothWaysRoundPolesTest, PassagesOfALongPathAreResolvedInWindows) {
   ToolPath pass;
   ASSERT_TRUE(GenerateFlankPath(surface, g, &pass).ok());
   constexpr int kPasses = 5;
-  ToolPath cam = WithoutPoses(pass);
-  for (int k = 0; k < kPasses; ++k) {
-    for (size_t i = 0; i < pass.poses.size(); ++i) {
-      cam.poses.push_back(pass.poses[i]);
-      cam.poses.back().rapid = k > 0 && i == 0;
-    }
-  }
-  SplineSmootherOptions guess_options;  // as the pipeline makes it for high_accuracy
-  guess_options.pole_crossing_deg = 0.0;
+  const ToolPath cam = RepeatedPasses(pass, kPasses);
   ToolPath guess;
   SplineSmootherReport spline_report;
-  ASSERT_TRUE(SmoothWithSplines(cam, machine, &surface, *cam.cutter, guess_options, &guess,
+  ASSERT_TRUE(SmoothWithSplines(cam, machine, &surface, *cam.cutter,
+                                ForHighAccuracyGuess(SplineSmootherOptions()), &guess,
                                 &spline_report)
                   .ok());
   const SmoothingInputs inputs{&cam, &guess, &surface, &*cam.cutter, &machine};
