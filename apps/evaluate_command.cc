@@ -23,6 +23,8 @@ int RunEvaluate(const Invocation& invocation) {
   DeviationOptions deviation_options;
   MotionOptions motion_options;
   if (s.ok()) s = MetricOptionsFromFlags(&deviation_options, &motion_options);
+  LinkMoveOptions links;
+  if (s.ok()) s = LinkMoveOptionsFromFlags(&links);
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
     return kExitUsage;
@@ -30,7 +32,7 @@ int RunEvaluate(const Invocation& invocation) {
   s = CheckOutputFolders({FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
   PathMetrics metrics;
-  if (s.ok()) s = LoadJob(FLAGS_quiet, &job);
+  if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job);
   if (s.ok()) {
     ProgressDisplay progress(stderr, "tpopt evaluate", !FLAGS_quiet, FLAGS_progress_after_s);
     progress.SetStage("evaluating deviation and motion");

@@ -102,6 +102,10 @@ DEFINE_double(pole_crossing_deg, 4.0,
 DEFINE_bool(accept_over_tolerance, false,
             "smooth: with a surface, write a high_accuracy result even where it is farther from "
             "the surface than --tolerance_mm (by default it is refused, exit 3, nothing written).");
+DEFINE_double(link_feed_ratio, 10.0,
+              "smooth, evaluate: a feed move at this many times the median feed or more is a "
+              "link between cuts, kept as programmed like a rapid and not smoothed across "
+              "(model/link_moves.h; 0 = no links).");
 DEFINE_bool(schedule_feed, true,
             "smooth: lower the feed move by move where an axis would still exceed its velocity, "
             "acceleration or jerk limit (solver/feed_scheduler.h).");

@@ -105,10 +105,11 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
   return Status::Ok();
 }
 
-Status LoadJob(bool quiet, Job* job) {
+Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   job->has_surface = !FLAGS_surface.empty();
   Status s = LoadMachine(FLAGS_machine, &job->machine);
   if (s.ok()) s = LoadToolPath(FLAGS_in, job->machine, quiet, &job->path);
+  if (s.ok()) MarkLinkMoves(links, &job->path);
   if (s.ok() && job->has_surface) s = ReadSurfaceJson(FLAGS_surface, &job->surface);
   if (s.ok()) {
     s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius, FLAGS_flute_length,

@@ -9,6 +9,7 @@
 
 #include "model/apt_io.h"
 #include "model/cutter.h"
+#include "model/link_moves.h"
 #include "model/machine.h"
 #include "model/ruled_surface.h"
 #include "model/status.h"
@@ -49,8 +50,9 @@ struct Job {
   const RuledSurface* surface_or_null() const { return has_surface ? &surface : nullptr; }
 };
 
-// Loads a Job from the flags; errors name the file at fault.
-Status LoadJob(bool quiet, Job* job);
+// Loads a Job from the flags, its links marked by `links`; errors name the
+// file at fault.
+Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job);
 
 // Fails (usage) when --gcode_style or --gcode_in_style is not tcp or joint.
 Status CheckGcodeFlags();

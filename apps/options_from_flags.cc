@@ -13,6 +13,13 @@ Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion
   return Status::Ok();
 }
 
+Status LinkMoveOptionsFromFlags(LinkMoveOptions* links) {
+  links->feed_ratio = FLAGS_link_feed_ratio;
+  std::string why;
+  if (!links->IsValid(&why)) return Status::Error("--link_feed_ratio: " + why);
+  return Status::Ok();
+}
+
 Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptions* ha) {
   spline->angle_tolerance_deg = FLAGS_spline_tolerance_deg;
   spline->zone_factor = FLAGS_zone_factor;

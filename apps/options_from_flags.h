@@ -5,6 +5,7 @@
 
 #include "model/axis_metrics.h"
 #include "model/deviation.h"
+#include "model/link_moves.h"
 #include "model/status.h"
 #include "solver/ceres_smoother.h"
 #include "solver/curve_output.h"
@@ -13,6 +14,8 @@
 namespace tpopt {
 
 Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion);
+
+Status LinkMoveOptionsFromFlags(LinkMoveOptions* links);
 
 Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptions* high_accuracy);
 

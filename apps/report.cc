@@ -28,6 +28,7 @@ nlohmann::json AxisJson(const AxisMotion& m, bool rotary) {
 nlohmann::json MetricsJson(const PathMetrics& metrics) {
   nlohmann::json j;
   j["poses"] = metrics.poses;
+  j["link_moves"] = metrics.link_moves;
   if (metrics.deviation) {
     const DeviationReport& d = *metrics.deviation;
     j["max_overcut_mm"] = d.max_overcut_mm;
@@ -75,6 +76,12 @@ std::string Summary(const std::string& label, const PathMetrics& m) {
                 c.peak_velocity * kRadToDeg, c.peak_acceleration * kRadToDeg,
                 m.motion.limit_violations, m.motion.machining_time_s);
   out += buf;
+  if (m.link_moves > 0) {
+    std::snprintf(buf, sizeof(buf),
+                  "  %d link moves (feed >= --link_feed_ratio x the median) kept as programmed\n",
+                  m.link_moves);
+    out += buf;
+  }
   if (!m.warning.empty()) out += "  note: " + m.warning + "\n";
   return out;
 }

@@ -100,6 +100,8 @@ int RunSmooth(const Invocation& invocation) {
   settings.resample_step_mm = FLAGS_resample_step_mm;
   settings.feed.default_feed_mm_per_min = FLAGS_feed;
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
+  LinkMoveOptions links;
+  if (s.ok()) s = LinkMoveOptionsFromFlags(&links);
   if (s.ok()) s = SmootherOptionsFromFlags(&settings.spline, &settings.high_accuracy);
   if (s.ok() && !(FLAGS_resample_step_mm >= 0)) {
     s = Status::Error("--resample_step_mm=" + std::to_string(FLAGS_resample_step_mm) +
@@ -112,7 +114,7 @@ int RunSmooth(const Invocation& invocation) {
 
   s = CheckOutputFolders({FLAGS_out, FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
-  if (s.ok()) s = LoadJob(FLAGS_quiet, &job);
+  if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   SmoothingResult result;
   SmoothingFailure failure;

@@ -141,7 +141,8 @@ MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,
       if (m.has_jerk[i]) {
         check(a, static_cast<int>(i), m.jerk[i][a], machine.limits[a].max_jerk, &axis.peak_jerk);
       }
-      if (ds_mid > 1e-9 && m.ds_mm[i] > 1e-9 && m.ds_mm[i - 1] > 1e-9) {
+      const bool in_run = !path.poses[i].link && !path.poses[i + 1].link;
+      if (in_run && ds_mid > 1e-9 && m.ds_mm[i] > 1e-9 && m.ds_mm[i - 1] > 1e-9) {
         const double slope1 = (joints[i + 1][a] - joints[i][a]) / m.ds_mm[i];
         const double slope0 = (joints[i][a] - joints[i - 1][a]) / m.ds_mm[i - 1];
         axis.peak_second_derivative_per_mm2 =

@@ -58,7 +58,7 @@ Status FormatGcode(const ToolPath& path, const Machine& machine, const GcodeOpti
     const Eigen::Vector3d xyz =
         o.style == GcodeStyle::kTcp ? p.p_w_tip : Eigen::Vector3d(joints[i].head<3>());
     const bool rapid = p.rapid || i == 0;  // the first move positions
-    int n = std::snprintf(line, sizeof(line), "%s X%.4f Y%.4f Z%.4f A%.4f C%.4f",
+    int n = std::snprintf(line, sizeof(line), "%s X%.6f Y%.6f Z%.6f A%.6f C%.6f",
                           rapid ? "G0" : "G1", xyz.x(), xyz.y(), xyz.z(),
                           joints[i][kA] * kRadToDeg, joints[i][kC] * kRadToDeg);
     if (!rapid) {

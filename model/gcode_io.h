@@ -35,7 +35,9 @@ struct GcodeOptions {
 
 // The program text. Joints come from Machine::AssignJoints (one branch,
 // unwrapped C); fails naming the pose when the path does not fit the
-// machine. Coordinates carry 4 decimals (0.1 um, 0.0001 deg).
+// machine. Coordinates carry 6 decimals (1 nm, 1e-6 deg): over the moves of a
+// few hundredths of a mm a finishing program has, 4 decimals of C alone would
+// add up to 0.16 deg/mm^2 of rounding to d2C/ds2.
 Status FormatGcode(const ToolPath& path, const Machine& machine, const GcodeOptions& options,
                    std::string* program);
 

@@ -162,8 +162,8 @@ bool LeastMotionAngles(const ToolPose* poses, size_t n, const AxisLimits& a_lim,
 // Unwraps C (wrapped, one per pose of poses[0, n)) along the path, and
 // returns whether any pose keeps its programmed joints. Where a program gave
 // the joints its winding is kept, because a different winding is real table
-// motion: a rapid target (or the first pose, which is written as one) that
-// keeps its programmed joints takes the programmed C exactly, so a rapid
+// motion: a rapid or link target (or the first pose, which is written as a
+// rapid) that keeps its programmed joints takes the programmed C exactly, so a rapid
 // turns the table as the program does (re-winding it, say) and parks where
 // the program parks; a kept pose after a kept pose keeps the program's step
 // (exactly the programmed C when the stretch started at a rapid target).
@@ -176,7 +176,7 @@ bool UnwrapC(const ToolPose* poses, size_t n, std::vector<double>* c_rad) {
   double turns_rad = 0.0;  // the running C minus the programmed C
   for (size_t i = 0; i < n; ++i) {
     const std::optional<RotaryJoints> kept = KeptProgrammedJoints(poses[i]);
-    const bool anchor = i == 0 || poses[i].rapid;
+    const bool anchor = i == 0 || IsPositioningMove(poses[i]);
     if (kept && (anchor || previous_kept)) {
       if (anchor) turns_rad = 0.0;
       c[i] = kept->c_rad + turns_rad;

@@ -12,6 +12,8 @@ Status EvaluatePath(const ToolPath& path, const Machine& machine, const RuledSur
   CHECK(metrics != nullptr);
   PathMetrics out;
   out.poses = static_cast<int>(path.poses.size());
+  out.link_moves = static_cast<int>(std::count_if(
+      path.poses.begin(), path.poses.end(), [](const ToolPose& p) { return p.link; }));
   std::vector<JointVector> joints;
   Status s = machine.AssignJoints(path, &joints, &out.warning);
   if (!s.ok()) return s;

@@ -20,6 +20,9 @@ struct PathMetrics {
   std::optional<DeviationReport> deviation;  // absent without a surface
   MotionReport motion;
   int poses = 0;
+  // Feed moves marked as links (model/link_moves.h): kept as programmed,
+  // and the motion's d2/ds2 peaks are not taken across them.
+  int link_moves = 0;
   // Notes worth a user's attention (e.g. a pass near the A = 0 pole).
   std::string warning;
 };

@@ -28,6 +28,10 @@ struct ToolPose {
   double feed_mm_per_min = 0.0;
   // True for a rapid (positioning) move to this pose.
   bool rapid = false;
+  // True for a link: a feed move the program makes to reposition between
+  // cuts (model/link_moves.h). Written as the feed move it is, but, like a
+  // rapid, kept as programmed and never smoothed across.
+  bool link = false;
   // 1-based line of the source file the pose came from, 0 if generated.
   int source_line = 0;
   // A and C as the source program gave them (G-code input), if it did.
@@ -36,10 +40,17 @@ struct ToolPose {
   std::optional<RotaryJoints> programmed;
 };
 
+// True when the move into `pose` positions the tool rather than cuts (a
+// rapid or a link): its target is kept as programmed, and smoothing, spline
+// runs and derivative stencils stop at it.
+inline bool IsPositioningMove(const ToolPose& pose) { return pose.rapid || pose.link; }
+
 // A pose a method makes between poses of its source (a sample, an inserted
-// transition), starting from a copy of `pose`: it has no source line and
-// was never programmed.
+// transition), starting from a copy of `pose`: a feed move inside a run,
+// with no source line, never programmed.
 inline ToolPose Derived(ToolPose pose) {
+  pose.rapid = false;
+  pose.link = false;
   pose.source_line = 0;
   pose.programmed.reset();
   return pose;

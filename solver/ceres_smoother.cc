@@ -42,18 +42,18 @@ class IterationObserver : public ceres::IterationCallback {
   const std::function<void(int, double)>& observer_;
 };
 
-// Poses that may move: not rapid targets, on a cutting move, and not held
+// Poses that may move: not rapid or link targets, on a cutting move, and not held
 // at an end of the problem (a window's seams, see solver/windowed_solve.h).
 std::vector<bool> FreePoses(const SmoothingInputs& in) {
   const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
   std::vector<bool> cutting(n, false);
   for (size_t i = 0; i + 1 < n; ++i) {
-    if (!path.poses[i + 1].rapid) cutting[i] = cutting[i + 1] = true;
+    if (!IsPositioningMove(path.poses[i + 1])) cutting[i] = cutting[i + 1] = true;
   }
   for (size_t i = 0; i < n; ++i) {
     const bool held = i < in.held_first || i + in.held_last >= n;
-    cutting[i] = cutting[i] && !path.poses[i].rapid && !held;
+    cutting[i] = cutting[i] && !IsPositioningMove(path.poses[i]) && !held;
   }
   return cutting;
 }
@@ -61,7 +61,7 @@ std::vector<bool> FreePoses(const SmoothingInputs& in) {
 // True when poses first..first+count-1 are joined by cutting moves.
 bool Connected(const ToolPath& path, size_t first, size_t count) {
   for (size_t j = first + 1; j < first + count; ++j) {
-    if (path.poses[j].rapid) return false;
+    if (IsPositioningMove(path.poses[j])) return false;
   }
   return true;
 }
@@ -152,9 +152,9 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
   };
   for (size_t i = 0; i < n; ++i) {
     if (!free_pose[i]) continue;
-    const bool back_cut = i > 0 && !path.poses[i].rapid;
+    const bool back_cut = i > 0 && !IsPositioningMove(path.poses[i]);
     const double back = back_cut ? state->s_mm[i] - state->s_mm[i - 1] : 0;
-    const bool forward_cut = i + 1 < n && !path.poses[i + 1].rapid;
+    const bool forward_cut = i + 1 < n && !IsPositioningMove(path.poses[i + 1]);
     const double ahead = forward_cut ? state->s_mm[i + 1] - state->s_mm[i] : 0;
     const int parts = forward_cut ? parts_of_move(i) : 1;
     // The pose stands for half a part of each neighbouring move.
@@ -180,8 +180,8 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
 // The band around the original program of every free pose (surface-free).
 ToleranceBandCost::Band BandOf(const ToolPath& path, const HighAccuracyOptions& o, size_t i) {
   const size_t n = path.poses.size();
-  const size_t prev = i > 0 && !path.poses[i].rapid ? i - 1 : i;
-  const size_t next = i + 1 < n && !path.poses[i + 1].rapid ? i + 1 : i;
+  const size_t prev = i > 0 && !IsPositioningMove(path.poses[i]) ? i - 1 : i;
+  const size_t next = i + 1 < n && !IsPositioningMove(path.poses[i + 1]) ? i + 1 : i;
   ToleranceBandCost::Band band;
   band.p0_w = path.poses[i].p_w_tip;
   band.a0_w = path.poses[i].a_w;
@@ -343,14 +343,20 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
                               std::sqrt(o.w_tip_height * h / length_mm) / o.tolerance_mm),
         nullptr, state->poses[i].data()));
   }
-  AddStencils<2>(path, free_pose, state, problem, "second", [&](size_t i) {
-    return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm, o.w_second,
-                                     o.w_tip_second);
-  });
-  AddStencils<3>(path, free_pose, state, problem, "third", [&](size_t i) {
-    return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm, o.w_third,
-                                     o.w_tip_third);
-  });
+  // A family whose weights are all zero adds nothing but evaluation time
+  // (a fifth of the surface-free preset's solve, which sets w_third = 0).
+  if (o.w_second > 0 || o.w_tip_second > 0) {
+    AddStencils<2>(path, free_pose, state, problem, "second", [&](size_t i) {
+      return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm, o.w_second,
+                                       o.w_tip_second);
+    });
+  }
+  if (o.w_third > 0 || o.w_tip_third > 0) {
+    AddStencils<3>(path, free_pose, state, problem, "third", [&](size_t i) {
+      return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm, o.w_third,
+                                       o.w_tip_third);
+    });
+  }
   AddLimitFamily<1>(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<2>(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<3>(in, o, length_mm, free_pose, state, problem);
@@ -364,7 +370,7 @@ std::vector<size_t> DistinctIndex(const ToolPath& path) {
   std::vector<size_t> index(path.poses.size());
   size_t distinct = 0;
   for (size_t i = 0; i < path.poses.size(); ++i) {
-    const bool repeat = i > 0 && !path.poses[i].rapid &&
+    const bool repeat = i > 0 && !IsPositioningMove(path.poses[i]) &&
                         (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm() < 1e-9 &&
                         (path.poses[i].a_w - path.poses[i - 1].a_w).norm() < 1e-12;
     if (i > 0 && !repeat) ++distinct;

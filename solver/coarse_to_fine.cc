@@ -47,8 +47,8 @@ std::vector<size_t> CoarseStations(const ToolPath& path, size_t target) {
   const size_t stride = std::max<size_t>(1, (n + count - 1) / count);
   std::vector<size_t> stations;
   for (size_t i = 0; i < n; ++i) {
-    const bool run_end = i + 1 == n || path.poses[i + 1].rapid;
-    if (i == 0 || i % stride == 0 || path.poses[i].rapid || run_end) stations.push_back(i);
+    const bool run_end = i + 1 == n || IsPositioningMove(path.poses[i + 1]);
+    if (i == 0 || i % stride == 0 || IsPositioningMove(path.poses[i]) || run_end) stations.push_back(i);
   }
   return stations;
 }
@@ -73,7 +73,7 @@ Status InterpolateStations(const ToolPath& fine, const std::vector<size_t>& stat
   // Each run [first, last] of the fine path starts and ends at a station.
   for (size_t j = 0; j < stations.size();) {
     size_t k = j + 1;
-    while (k < stations.size() && !fine.poses[stations[k]].rapid) ++k;
+    while (k < stations.size() && !IsPositioningMove(fine.poses[stations[k]])) ++k;
     std::vector<size_t> members;
     std::vector<double> knots;
     for (size_t m = j; m < k; ++m) {

@@ -22,7 +22,7 @@
 namespace tpopt {
 
 // Indices (increasing) of about `target` stations of `path`: the first and
-// last pose, every rapid target and the pose before it (the ends of each
+// last pose, every rapid or link target and the pose before it (the ends of each
 // run), and every stride-th pose in between, stride = ceil(n / target).
 std::vector<size_t> CoarseStations(const ToolPath& path, size_t target);
 

@@ -13,13 +13,13 @@ double TurnDeg(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
 }
 
-// Index ranges [first, last] of the runs: a run ends before a rapid, at a
+// Index ranges [first, last] of the runs: a run ends before a rapid or a link, at a
 // corner, or at a repeated point.
 std::vector<std::pair<size_t, size_t>> SplitRuns(const ToolPath& in, double corner_angle_deg) {
   std::vector<std::pair<size_t, size_t>> runs;
   size_t first = 0;
   for (size_t i = 1; i <= in.poses.size(); ++i) {
-    bool ends = i == in.poses.size() || in.poses[i].rapid;
+    bool ends = i == in.poses.size() || IsPositioningMove(in.poses[i]);
     if (!ends) {
       const Eigen::Vector3d move = in.poses[i].p_w_tip - in.poses[i - 1].p_w_tip;
       ends = move.norm() < kSamePointMm;
@@ -29,10 +29,10 @@ std::vector<std::pair<size_t, size_t>> SplitRuns(const ToolPath& in, double corn
       }
     }
     if (!ends) continue;
-    // A corner pose ends one run and starts the next; a rapid target or a
+    // A corner pose ends one run and starts the next; a rapid or link target or a
     // repeated point starts the next run on its own.
     runs.emplace_back(first, i - 1);
-    first = i == in.poses.size() || in.poses[i].rapid ||
+    first = i == in.poses.size() || IsPositioningMove(in.poses[i]) ||
                     (in.poses[i].p_w_tip - in.poses[i - 1].p_w_tip).norm() < kSamePointMm
                 ? i
                 : i - 1;
@@ -45,7 +45,6 @@ ToolPose Between(const ToolPose& from, const ToolPose& to, const Eigen::Vector3d
   pose.p_w_tip = tip;
   const Eigen::Vector3d axis = (1.0 - t) * from.a_w + t * to.a_w;
   pose.a_w = axis.norm() > 1e-12 ? axis.normalized() : to.a_w;
-  pose.rapid = false;
   return pose;
 }
 

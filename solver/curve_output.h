@@ -34,7 +34,7 @@ struct CurveOutputOptions {
 void AppendFittedRun(const std::vector<ToolPose>& poses, const std::vector<CubicSpan>& spans,
                      double sample_step_mm, ToolPath* out, std::vector<AptCurveSpan>* records);
 
-// Fits every run of `in`: maximal chains of feed moves, split at rapids and
+// Fits every run of `in`: maximal chains of feed moves, split at rapids, links,
 // corners and repeated points, with tangents estimated from the points
 // (EstimateUnitTangents). Runs of fewer than 4 poses stay straight moves.
 // Every input pose is written, in order, with its own values.

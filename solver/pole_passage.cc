@@ -53,7 +53,7 @@ std::vector<PolePassage> FindPolePassages(const ToolPath& path,
       continue;
     }
     size_t last = i;
-    while (last + 1 < n && !path.poses[last + 1].rapid &&
+    while (last + 1 < n && !IsPositioningMove(path.poses[last + 1]) &&
            PolarAndAzimuth(path.poses[last + 1].a_w)[0] < pole_angle_rad) {
       ++last;
     }

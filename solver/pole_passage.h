@@ -36,7 +36,7 @@ struct PolePassage {
   double azimuth_sweep_rad = 0.0;  // net turn of the azimuth, unwrapped
 };
 
-// Passages of `path` in order; stretches do not span rapids.
+// Passages of `path` in order; stretches do not span rapids or links.
 std::vector<PolePassage> FindPolePassages(const ToolPath& path,
                                           double pole_angle_rad);
 

@@ -43,7 +43,6 @@ Status ResampleRun(const ToolPath& in, const std::vector<JointVector>& joints, s
     if (j > 0 && j < steps) {
       p = Derived(p);
       fit.Evaluate(sj, &p);
-      p.rapid = false;
     }
     out->poses.push_back(p);
   }
@@ -72,7 +71,7 @@ Status ResamplePath(const ToolPath& in, const Machine& machine, const ResampleOp
   ToolPath result = WithoutPoses(in);
   for (size_t first = 0; first < in.poses.size();) {
     size_t end = first + 1;
-    while (end < in.poses.size() && !in.poses[end].rapid) ++end;
+    while (end < in.poses.size() && !IsPositioningMove(in.poses[end])) ++end;
     st = ResampleRun(in, joints, first, end, options.step_mm, &result);
     if (!st.ok()) return st;
     first = end;

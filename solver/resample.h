@@ -2,8 +2,8 @@
 // the rotary joints (A, C, unwrapped) of each cutting run, over the tip's
 // arc length, sampled again at a uniform step no longer than `step_mm`.
 // Spline in the joints rather than in the axis vector so that the rotaries
-// move smoothly between the new poses too. Rapids and the poses they reach
-// are kept as they are; each run keeps its first and last pose exactly.
+// move smoothly between the new poses too. Rapids, links and the poses they
+// reach are kept as they are; each run keeps its first and last pose exactly.
 #ifndef TPOPT_SOLVER_RESAMPLE_H_
 #define TPOPT_SOLVER_RESAMPLE_H_
 

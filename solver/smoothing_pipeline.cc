@@ -62,7 +62,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
   const auto& poses = job.input->poses;
   const bool cuts = std::any_of(poses.begin() + std::min<size_t>(1, poses.size()), poses.end(),
-                                [](const ToolPose& p) { return !p.rapid; });
+                                [](const ToolPose& p) { return !IsPositioningMove(p); });
   if (!cuts) {
     return Fail(SmoothingFailure::kBadInput,
                 "the path has no cutting move to smooth (" + std::to_string(poses.size()) +

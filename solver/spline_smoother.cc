@@ -251,7 +251,7 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
 
   // A pose may move when neither it nor a neighbour is a rapid end.
   auto movable = [&](size_t i) {
-    return !poses[i].rapid && (i + 1 >= n || !poses[i + 1].rapid);
+    return !IsPositioningMove(poses[i]) && (i + 1 >= n || !IsPositioningMove(poses[i + 1]));
   };
   // Pins join a modified zone to untouched neighbours; when every pose
   // moves onto the curves there is nothing untouched to join.
@@ -292,8 +292,8 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
 // starts at a rapid target (or the path's start).
 std::pair<size_t, size_t> RunAround(const ToolPath& path, size_t i) {
   size_t first = i, end = i + 1;
-  while (first > 0 && !path.poses[first].rapid) --first;
-  while (end < path.poses.size() && !path.poses[end].rapid) ++end;
+  while (first > 0 && !IsPositioningMove(path.poses[first])) --first;
+  while (end < path.poses.size() && !IsPositioningMove(path.poses[end])) ++end;
   return {first, end};
 }
 
@@ -324,11 +324,11 @@ bool RouteThroughPoles(const ToolPath& in, const Machine& machine,
   if (options.pole_passage_deg <= 0 || options.pole_crossing_deg <= 0) return false;
   const size_t n = in.poses.size();
   for (PolePassage passage : FindPolePassages(in, options.pole_passage_deg / kRadToDeg)) {
-    const bool rapid_target = in.poses[passage.first].rapid;
-    const bool before_rapid = passage.last + 1 < n && in.poses[passage.last + 1].rapid;
-    if (passage.last - passage.first < size_t{rapid_target} + size_t{before_rapid}) continue;
-    passage.first += rapid_target;
-    passage.last -= before_rapid;
+    const bool held_first = IsPositioningMove(in.poses[passage.first]);
+    const bool held_last = passage.last + 1 < n && IsPositioningMove(in.poses[passage.last + 1]);
+    if (passage.last - passage.first < size_t{held_first} + size_t{held_last}) continue;
+    passage.first += held_first;
+    passage.last -= held_last;
     const PoleCrossing crossing = FitPoleCrossing(in, passage);
     const double miss_deg = crossing.miss_rad * kRadToDeg;
     // A passage already on its plane (to round-off) crosses the pole as it
@@ -397,7 +397,7 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   const size_t n = in.poses.size();
   for (size_t first = 0; first < n;) {
     size_t end = first + 1;
-    while (end < n && !in.poses[end].rapid) ++end;
+    while (end < n && !IsPositioningMove(in.poses[end])) ++end;
     Status st = SmoothRun(job, first, end, &result.poses, report);
     if (!st.ok()) return st;
     first = end;

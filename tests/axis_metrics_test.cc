@@ -96,6 +96,25 @@ TEST(AxisMetricsTest, RapidTakesItsSlowestAxisAndBreaksTheChain) {
   }
 }
 
+// A link (model/link_moves.h) is a feed move: timed at its feed and checked
+// against the limits like any other. Only the arc-length measure stops at it,
+// because the corner where a link meets a cut is the program's, kept as is.
+TEST(AxisMetricsTest, ALinkIsAFeedMoveButEndsTheArcLengthStencils) {
+  ToolPath path = PolynomialTiltPath(5, 0.0, 1);
+  for (int i = 0; i < 5; ++i) {  // A = 0.2 rad, then 0.05 rad/mm from pose 2 on
+    path.poses[i].a_w = AnglesToAxis(0.2 + 0.05 * std::max(0, i - 2), M_PI / 2);
+  }
+  const MotionReport plain = Evaluate(Machine(), path);
+  EXPECT_NEAR(plain.axes[kA].peak_second_derivative_per_mm2, 0.05, 1e-12);  // the corner at 2
+  path.poses[3].link = true;
+  const MotionReport linked = Evaluate(Machine(), path);
+  EXPECT_EQ(linked.axes[kA].peak_second_derivative_per_mm2, 0.0);
+  EXPECT_EQ(linked.axes[kA].peak_velocity, plain.axes[kA].peak_velocity);
+  EXPECT_NEAR(linked.axes[kA].peak_velocity, 0.05 * kSpeed, 1e-12);
+  EXPECT_EQ(linked.axes[kA].peak_acceleration, plain.axes[kA].peak_acceleration);
+  EXPECT_EQ(linked.machining_time_s, plain.machining_time_s);
+}
+
 TEST(AxisMetricsTest, RotaryOnlyMoveReadsFeedAsDegreesPerMinute) {
   ToolPath path;
   for (int i = 0; i < 2; ++i) {

@@ -155,6 +155,54 @@ TEST_F(CeresSmootherTest, SurfaceFreeUsesTheWholeBandWhereTheSpikeNeedsIt) {
   }
 }
 
+// A program that turns the table 2 deg on a link (say, indexing to the next
+// blade) keeps the link's target as programmed, and the cut before it is not
+// bent toward a step it never makes: no stencil spans the link, so it comes
+// out as that cut smoothed on its own (to the solver's convergence). The same
+// step on a plain feed move is smoothed, bending the poses before it.
+TEST_F(CeresSmootherTest, SurfaceFreeKeepsALinkAsProgrammedAndDoesNotSmoothAcrossIt) {
+  ToolPath stepped = clean_;
+  for (size_t i = 100; i < stepped.poses.size(); ++i) {
+    stepped.poses[i].a_w = Eigen::AngleAxisd(2 * kDeg, Eigen::Vector3d::UnitZ()) *
+                           stepped.poses[i].a_w;
+  }
+  ToolPath linked = stepped;
+  linked.poses[100].link = true;
+  HighAccuracyOptions options = SurfaceFreeOptions();
+  options.max_iterations = 2000;  // converged, so that what remains is the problem's
+  options.function_tolerance = 1e-14;
+  HighAccuracyReport report;
+  const ToolPath kept = SmoothSurfaceFree(linked, options, &report);
+  const ToolPath smoothed = SmoothSurfaceFree(stepped, options, &report);
+  EXPECT_EQ(kept.poses[100].p_w_tip, linked.poses[100].p_w_tip);
+  EXPECT_EQ(kept.poses[100].a_w, linked.poses[100].a_w);
+  EXPECT_TRUE(kept.poses[100].link);
+  // The cuts on either side come out as if each were a program of its own.
+  ToolPath before_link = stepped;
+  before_link.poses.resize(100);
+  const ToolPath alone = SmoothSurfaceFree(before_link, options, &report);
+  const auto apart_deg = [&](const ToolPath& a, const ToolPath& b, size_t i) {
+    return std::acos(std::min(1.0, a.poses[i].a_w.dot(b.poses[i].a_w))) / kDeg;
+  };
+  ToolPath after_link = stepped;
+  after_link.poses.erase(after_link.poses.begin(), after_link.poses.begin() + 100);
+  const ToolPath alone_after = SmoothSurfaceFree(after_link, options, &report);
+  // Near the link, pose for pose (far from it the band leaves the solver
+  // free to tilt a stretch by a straight line, which costs nothing).
+  for (size_t i = 90; i < 100; ++i) EXPECT_LT(apart_deg(kept, alone, i), 0.01) << i;
+  EXPECT_GT(apart_deg(smoothed, alone, 99), 0.2);  // bent toward the step
+  // As smooth as the two cuts smoothed apart; the smoothed step is not.
+  const PathMetrics k = Evaluate(kept), s = Evaluate(smoothed), a = Evaluate(alone),
+                    b = Evaluate(alone_after);
+  for (int axis : {kA, kC}) {
+    const double apart = std::max(a.motion.axes[axis].peak_second_derivative_per_mm2,
+                                  b.motion.axes[axis].peak_second_derivative_per_mm2);
+    EXPECT_LT(k.motion.axes[axis].peak_second_derivative_per_mm2, 1.05 * apart) << axis;
+  }
+  EXPECT_GT(s.motion.axes[kC].peak_second_derivative_per_mm2,
+            2 * k.motion.axes[kC].peak_second_derivative_per_mm2);
+}
+
 TEST_F(CeresSmootherTest, RejectsMismatchedInputsAndBadOptions) {
   ToolPath shorter = clean_;
   shorter.poses.pop_back();

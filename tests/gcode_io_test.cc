@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "model/json_io.h"
+#include "model/link_moves.h"
+#include "model/path_metrics.h"
 #include "model/path_generator.h"
 #include "tests/test_util.h"
 
@@ -286,6 +288,27 @@ TEST(GcodeCliTest, SurfaceFreeSmoothingOfLinuxCncsImpellerProgram) {
     EXPECT_LE(std::acos(std::min(1.0, a.a_w.dot(b.a_w))) * 180 / M_PI, 0.5 + 1e-3) << i;
   }
   EXPECT_EQ(Interpret(out).size(), n);
+  // The six G1s that index from one blade to the next (at 40 times the
+  // median feed) are links, their targets written as programmed. The written
+  // program, marked by the input's links (its feeds were scheduled down),
+  // has at most half the input's peak d2A/ds2 and d2C/ds2 over the cuts.
+  EXPECT_EQ(MarkLinkMoves(LinkMoveOptions(), &before), 6);
+  for (size_t i = 0; i < n; ++i) {
+    after.poses[i].link = before.poses[i].link;
+    if (!before.poses[i].link) continue;
+    EXPECT_LT((after.poses[i].p_w_tip - before.poses[i].p_w_tip).norm(), 1e-6) << i;
+    EXPECT_LT(std::acos(std::min(1.0, after.poses[i].a_w.dot(before.poses[i].a_w))), 1e-7) << i;
+  }
+  PathMetrics m_before, m_after;
+  ASSERT_TRUE(EvaluatePath(before, machine, nullptr, Cutter(), DeviationOptions(),
+                           MotionOptions(), &m_before).ok());
+  ASSERT_TRUE(EvaluatePath(after, machine, nullptr, Cutter(), DeviationOptions(),
+                           MotionOptions(), &m_after).ok());
+  for (int axis : {kA, kC}) {
+    EXPECT_LE(m_after.motion.axes[axis].peak_second_derivative_per_mm2,
+              0.5 * m_before.motion.axes[axis].peak_second_derivative_per_mm2)
+        << axis;
+  }
   // Every rapid as programmed, as LinuxCNC reads both programs: the same
   // X Y Z A C to the written precision, C's winding and C at A = 0 included
   // (the original's M428/M429 need the sim's M-files, so a copy leaves

@@ -1,0 +1,49 @@
+#include "model/link_moves.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace tpopt {
+
+bool LinkMoveOptions::IsValid(std::string* why) const {
+  if (feed_ratio == 0 || (std::isfinite(feed_ratio) && feed_ratio > 1)) return true;
+  if (why != nullptr) {
+    std::ostringstream err;
+    err << "link feed ratio " << feed_ratio << " must be 0 (no links) or > 1";
+    *why = err.str();
+  }
+  return false;
+}
+
+namespace {
+
+// A feed move into pose i (i > 0) with a programmed feed.
+bool HasFeed(const ToolPath& path, size_t i) {
+  return i > 0 && !path.poses[i].rapid && path.poses[i].feed_mm_per_min > 0;
+}
+
+}  // namespace
+
+int MarkLinkMoves(const LinkMoveOptions& options, ToolPath* path) {
+  std::vector<double> feeds;
+  for (size_t i = 0; i < path->poses.size(); ++i) {
+    path->poses[i].link = false;
+    if (HasFeed(*path, i)) feeds.push_back(path->poses[i].feed_mm_per_min);
+  }
+  if (options.feed_ratio <= 0 || feeds.size() < 2) return 0;
+  const auto middle = feeds.begin() + feeds.size() / 2;
+  std::nth_element(feeds.begin(), middle, feeds.end());
+  const double threshold = options.feed_ratio * *middle;
+  int links = 0;
+  for (size_t i = 0; i < path->poses.size(); ++i) {
+    if (HasFeed(*path, i) && path->poses[i].feed_mm_per_min >= threshold) {
+      path->poses[i].link = true;
+      ++links;
+    }
+  }
+  return links;
+}
+
+}  // namespace tpopt
