@@ -22,6 +22,7 @@
 #include "apps/huge_page_malloc.h"
 #include "model/gcode_io.h"
 #include "model/json_io.h"
+#include "model/link_moves.h"
 #include "model/path_generator.h"
 #include "solver/smoothing_pipeline.h"
 
@@ -120,6 +121,7 @@ void RunLinuxCncImpeller(std::vector<Row>* rows) {
                  kLinuxCncImpeller);
     return;
   }
+  MarkLinkMoves(LinkMoveOptions(), &input);  // as tpopt does by default: the six blade indexes
   SmoothingSettings preset;
   preset.high_accuracy.tolerance_mm = 0.01;
   preset.high_accuracy.angle_tolerance_deg = 0.5;
