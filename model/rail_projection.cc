@@ -67,9 +67,9 @@ std::vector<double> ProjectPathOntoRail(const BSplineCurve& rail, const ToolPath
   double previous = 0.0;
   for (size_t i = 0; i < path.poses.size(); ++i) {
     const Eigen::Vector3d& p = path.poses[i].p_w_tip;
-    // A rapid may come from anywhere (a retract, another pass): search the
-    // whole rail for the pose it reaches.
-    const bool fresh = !have_previous || path.poses[i].rapid;
+    // A rapid or a link may come from anywhere (a retract, another pass):
+    // search the whole rail for the pose it reaches.
+    const bool fresh = !have_previous || IsPositioningMove(path.poses[i]);
     const double lo = std::max(0.0, previous - window_u), hi = std::min(1.0, previous + window_u);
     u[i] = fresh ? -1.0 : ProjectOntoCurve(rail, p, lo, hi, 16);
     // A foot on the window's edge means the step was larger than the

@@ -23,8 +23,8 @@ double ProjectOntoCurve(const BSplineCurve& curve, const Eigen::Vector3d& point,
 
 // u of every pose of `path` on `rail`, monotone along the path: each pose is
 // searched near its predecessor's u (a window of +-window_u) so that a path
-// over a rail that nearly folds back never jumps rulings. A rapid pose (the
-// start of a cut) is searched over the whole rail.
+// over a rail that nearly folds back never jumps rulings. A rapid or link
+// target (the start of a cut) is searched over the whole rail.
 std::vector<double> ProjectPathOntoRail(const BSplineCurve& rail, const ToolPath& path,
                                         double window_u = 0.05);
 

@@ -191,6 +191,45 @@ TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
   EXPECT_FALSE(FileExists(out));
 }
 
+// A feed move at --link_feed_ratio times the median feed or more is a link:
+// counted in the console and the report of both commands, and a ratio that
+// cannot separate links from cuts is a usage error that writes nothing.
+TEST(TpoptCliTest, SmoothAndEvaluateMarkLinksByTheirFeed) {
+  TempDir dir;
+  const std::string cl = dir.File("links.cls");
+  std::ofstream program(cl);
+  program << "CUTTER/8\nMULTAX\nFEDRAT/MMPM,100\n";
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass > 0) program << "FEDRAT/MMPM,3000\n";  // the link to the second pass
+    for (int i = 0; i < 6; ++i) {
+      program << "GOTO/" << i << "," << 10 * pass << ",0,0,0.1,0.99498744\n";
+      if (pass > 0 && i == 0) program << "FEDRAT/MMPM,100\n";
+    }
+  }
+  program.close();
+  auto r = RunCommand(Tpopt("evaluate --in=" + cl + " --report=" + dir.File("e.json")));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(ReadJson(dir.File("e.json"))["link_moves"], 1);
+  EXPECT_NE(r.output.find("1 link moves"), std::string::npos) << r.output;
+  r = RunCommand(Tpopt("evaluate --in=" + cl + " --report=" + dir.File("e0.json") +
+                       " --link_feed_ratio=0"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(ReadJson(dir.File("e0.json"))["link_moves"], 0);
+  r = RunCommand(Tpopt("smooth --mode=spline --in=" + cl + " --out=" + dir.File("s.cls") +
+                       " --report=" + dir.File("s.json")));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(ReadJson(dir.File("s.json"))["input"]["link_moves"], 1);
+  for (const char* command : {"evaluate --report=", "smooth --mode=spline --out="}) {
+    r = RunCommand(Tpopt(std::string(command) + dir.File("x.out") + " --in=" + cl +
+                         " --link_feed_ratio=1"));
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_NE(r.output.find("--link_feed_ratio: link feed ratio 1 must be 0 (no links) or > 1"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(FileExists(dir.File("x.out")));
+  }
+}
+
 TEST(TpoptCliTest, SmoothWritesTheBSplineFitAsSpansAndPoints) {
   TempDir dir;
   const std::string cam = dir.File("cam.cls"), out = dir.File("out.cls");
