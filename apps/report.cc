@@ -78,8 +78,9 @@ std::string Summary(const std::string& label, const PathMetrics& m) {
   out += buf;
   if (m.link_moves > 0) {
     std::snprintf(buf, sizeof(buf),
-                  "  %d link moves (feed >= --link_feed_ratio x the median) kept as programmed\n",
-                  m.link_moves);
+                  "  %d link move%s (feed >= --link_feed_ratio x the median), not smoothed "
+                  "across\n",
+                  m.link_moves, m.link_moves == 1 ? "" : "s");
     out += buf;
   }
   if (!m.warning.empty()) out += "  note: " + m.warning + "\n";

@@ -33,7 +33,7 @@ struct AxisMotion {
   // Peak |d^2 J / ds^2| over the tip's arc length s, mm/mm^2 or rad/mm^2:
   // the feed-independent smoothness measure of the seed's spline method.
   // Taken within runs: not where a link (model/link_moves.h) meets a cut,
-  // a corner the program makes and smoothing keeps.
+  // a corner the program makes and smoothing does not round.
   double peak_second_derivative_per_mm2 = 0.0;
   // Samples beyond the travel, velocity, acceleration or jerk limit.
   int limit_violations = 0;

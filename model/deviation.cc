@@ -52,7 +52,7 @@ class Motion {
  private:
   void FindMoves() {
     for (size_t i = 0; i + 1 < path_->poses.size(); ++i) {
-      if (!IsPositioningMove(path_->poses[i + 1])) moves_.push_back(static_cast<int>(i));
+      if (!path_->poses[i + 1].rapid) moves_.push_back(static_cast<int>(i));
     }
   }
 

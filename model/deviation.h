@@ -13,7 +13,8 @@
 //  - without one, the tip moves on the straight line and the axis turns on
 //    the great circle between the two axes (slerp), which is what a
 //    controller with tool-centre-point control and vector interpolation does.
-// A move into a rapid pose is positioning, not cutting, and is ignored.
+// A move into a rapid pose is positioning, not cutting, and is ignored; a
+// link (model/link_moves.h) is a feed move, checked like any other.
 //
 // The evaluator must stay exact on dense paths: on a twisted surface the
 // pose that cuts deepest at q lies about R sin(alpha) of arc length away

@@ -142,7 +142,7 @@ bool LeastMotionAngles(const ToolPose* poses, size_t n, const AxisLimits& a_lim,
   if (prev_cost[b] == kInf) return false;
   for (size_t i = n; i-- > 0;) {
     // Branch 1 is (-A, C + pi); 0 - A rather than -A so that A = 0 (a park
-    // at A 0, say) is written "A0.0000", not "A-0.0000".
+    // at A 0, say) is written "A0.000000", not "A-0.000000".
     if (b == 1) (*a_rad)[i] = 0.0 - (*a_rad)[i];
     (*c_rad)[i] = held_c[i][b];
     if (i > 0) b = from[i][b];
@@ -162,8 +162,8 @@ bool LeastMotionAngles(const ToolPose* poses, size_t n, const AxisLimits& a_lim,
 // Unwraps C (wrapped, one per pose of poses[0, n)) along the path, and
 // returns whether any pose keeps its programmed joints. Where a program gave
 // the joints its winding is kept, because a different winding is real table
-// motion: a rapid or link target (or the first pose, which is written as a
-// rapid) that keeps its programmed joints takes the programmed C exactly, so a rapid
+// motion: a rapid target (or the first pose, which is written as one) that
+// keeps its programmed joints takes the programmed C exactly, so a rapid
 // turns the table as the program does (re-winding it, say) and parks where
 // the program parks; a kept pose after a kept pose keeps the program's step
 // (exactly the programmed C when the stretch started at a rapid target).
@@ -176,7 +176,7 @@ bool UnwrapC(const ToolPose* poses, size_t n, std::vector<double>* c_rad) {
   double turns_rad = 0.0;  // the running C minus the programmed C
   for (size_t i = 0; i < n; ++i) {
     const std::optional<RotaryJoints> kept = KeptProgrammedJoints(poses[i]);
-    const bool anchor = i == 0 || IsPositioningMove(poses[i]);
+    const bool anchor = i == 0 || poses[i].rapid;
     if (kept && (anchor || previous_kept)) {
       if (anchor) turns_rad = 0.0;
       c[i] = kept->c_rad + turns_rad;

@@ -64,6 +64,14 @@ struct ToolPath {
   std::string title;
 };
 
+// One past the last pose of the cutting run that starts at pose `first`:
+// the next rapid or link target, or the end of the path.
+inline size_t RunEnd(const ToolPath& path, size_t first) {
+  size_t end = first + 1;
+  while (end < path.poses.size() && !IsPositioningMove(path.poses[end])) ++end;
+  return end;
+}
+
 // `path` without its poses, cutter and title kept: where a derived path
 // starts, without first copying every pose of the original.
 inline ToolPath WithoutPoses(const ToolPath& path) {

@@ -58,10 +58,16 @@ std::vector<bool> FreePoses(const SmoothingInputs& in) {
   return cutting;
 }
 
-// True when poses first..first+count-1 are joined by cutting moves.
-bool Connected(const ToolPath& path, size_t first, size_t count) {
+// The moves a stencil may not span: smoothness stops at every positioning
+// move, the limits only at rapids, because a link is a feed move the machine
+// must keep within its limits like any other.
+using StencilBreak = bool (*)(const ToolPose&);
+bool IsRapid(const ToolPose& pose) { return pose.rapid; }
+
+// True when no move between poses first..first+count-1 is a `breaks` move.
+bool Connected(const ToolPath& path, size_t first, size_t count, StencilBreak breaks) {
   for (size_t j = first + 1; j < first + count; ++j) {
-    if (IsPositioningMove(path.poses[j])) return false;
+    if (breaks(path.poses[j])) return false;
   }
   return true;
 }
@@ -96,13 +102,15 @@ DeviationCost::Points RulingPoints(const RuledSurface& surface, double u,
   return points;
 }
 
-// Adds the stencils of one derivative family over every connected window.
+// Adds the stencils of one derivative family over every window that no
+// `breaks` move splits.
 template <int kOrder, typename MakeCost>
-void AddStencils(const ToolPath& path, const std::vector<bool>& free_pose, SmoothingState* state,
-                 ceres::Problem* problem, const std::string& family, MakeCost make_cost) {
+void AddStencils(const ToolPath& path, const std::vector<bool>& free_pose, StencilBreak breaks,
+                 SmoothingState* state, ceres::Problem* problem, const std::string& family,
+                 MakeCost make_cost) {
   const size_t n = path.poses.size();
   for (size_t i = 0; i + kOrder < n; ++i) {
-    if (!Connected(path, i, kOrder + 1)) continue;
+    if (!Connected(path, i, kOrder + 1, breaks)) continue;
     bool any_free = false;
     std::vector<double*> blocks;
     for (size_t j = i; j <= i + kOrder; ++j) {
@@ -128,7 +136,7 @@ void AddLimitFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, dou
     any = any || std::isfinite(limits[a]);
   }
   if (!any || o.w_limits <= 0) return;
-  AddStencils<kOrder>(*in.input, free_pose, state, problem, "limits", [&](size_t i) {
+  AddStencils<kOrder>(*in.input, free_pose, IsRapid, state, problem, "limits", [&](size_t i) {
     const double h = (state->s_mm[i + kOrder] - state->s_mm[i]) / kOrder;
     return AxisLimitCost<kOrder>::Create(Window<kOrder + 1>(state->t_s, i), limits,
                                          in.machine->kinematics,
@@ -343,16 +351,17 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
                               std::sqrt(o.w_tip_height * h / length_mm) / o.tolerance_mm),
         nullptr, state->poses[i].data()));
   }
-  // A family whose weights are all zero adds nothing but evaluation time
-  // (a fifth of the surface-free preset's solve, which sets w_third = 0).
+  // A family whose weights are all zero adds nothing but work: its zero
+  // Jacobians still go through the linear algebra (more than half the
+  // surface-free preset's solve, which sets w_third = 0).
   if (o.w_second > 0 || o.w_tip_second > 0) {
-    AddStencils<2>(path, free_pose, state, problem, "second", [&](size_t i) {
+    AddStencils<2>(path, free_pose, IsPositioningMove, state, problem, "second", [&](size_t i) {
       return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm, o.w_second,
                                        o.w_tip_second);
     });
   }
   if (o.w_third > 0 || o.w_tip_third > 0) {
-    AddStencils<3>(path, free_pose, state, problem, "third", [&](size_t i) {
+    AddStencils<3>(path, free_pose, IsPositioningMove, state, problem, "third", [&](size_t i) {
       return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm, o.w_third,
                                        o.w_tip_third);
     });

@@ -48,7 +48,8 @@ std::vector<size_t> CoarseStations(const ToolPath& path, size_t target) {
   std::vector<size_t> stations;
   for (size_t i = 0; i < n; ++i) {
     const bool run_end = i + 1 == n || IsPositioningMove(path.poses[i + 1]);
-    if (i == 0 || i % stride == 0 || IsPositioningMove(path.poses[i]) || run_end) stations.push_back(i);
+    const bool run_start = i == 0 || IsPositioningMove(path.poses[i]);
+    if (run_start || i % stride == 0 || run_end) stations.push_back(i);
   }
   return stations;
 }

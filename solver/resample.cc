@@ -70,8 +70,7 @@ Status ResamplePath(const ToolPath& in, const Machine& machine, const ResampleOp
   if (!st.ok()) return st;
   ToolPath result = WithoutPoses(in);
   for (size_t first = 0; first < in.poses.size();) {
-    size_t end = first + 1;
-    while (end < in.poses.size() && !IsPositioningMove(in.poses[end])) ++end;
+    const size_t end = RunEnd(in, first);
     st = ResampleRun(in, joints, first, end, options.step_mm, &result);
     if (!st.ok()) return st;
     first = end;

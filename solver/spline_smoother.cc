@@ -289,12 +289,11 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
 }
 
 // [first, end) of the cutting run that holds pose i of `path`: a run
-// starts at a rapid target (or the path's start).
+// starts at a rapid or link target (or the path's start).
 std::pair<size_t, size_t> RunAround(const ToolPath& path, size_t i) {
-  size_t first = i, end = i + 1;
+  size_t first = i;
   while (first > 0 && !IsPositioningMove(path.poses[first])) --first;
-  while (end < path.poses.size() && !IsPositioningMove(path.poses[end])) ++end;
-  return {first, end};
+  return {first, RunEnd(path, i)};
 }
 
 // Whether the machine takes `passage` of `routed` (put on a plane through
@@ -324,11 +323,11 @@ bool RouteThroughPoles(const ToolPath& in, const Machine& machine,
   if (options.pole_passage_deg <= 0 || options.pole_crossing_deg <= 0) return false;
   const size_t n = in.poses.size();
   for (PolePassage passage : FindPolePassages(in, options.pole_passage_deg / kRadToDeg)) {
-    const bool held_first = IsPositioningMove(in.poses[passage.first]);
-    const bool held_last = passage.last + 1 < n && IsPositioningMove(in.poses[passage.last + 1]);
-    if (passage.last - passage.first < size_t{held_first} + size_t{held_last}) continue;
-    passage.first += held_first;
-    passage.last -= held_last;
+    const bool held_start = IsPositioningMove(in.poses[passage.first]);
+    const bool held_end = passage.last + 1 < n && IsPositioningMove(in.poses[passage.last + 1]);
+    if (passage.last - passage.first < size_t{held_start} + size_t{held_end}) continue;
+    passage.first += held_start;  // a rapid or link target stays as programmed
+    passage.last -= held_end;     // and so does the pose before one
     const PoleCrossing crossing = FitPoleCrossing(in, passage);
     const double miss_deg = crossing.miss_rad * kRadToDeg;
     // A passage already on its plane (to round-off) crosses the pole as it
@@ -396,8 +395,7 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   // third of the method's time on long paths.
   const size_t n = in.poses.size();
   for (size_t first = 0; first < n;) {
-    size_t end = first + 1;
-    while (end < n && !IsPositioningMove(in.poses[end])) ++end;
+    const size_t end = RunEnd(in, first);
     Status st = SmoothRun(job, first, end, &result.poses, report);
     if (!st.ok()) return st;
     first = end;

@@ -177,7 +177,8 @@ TEST_F(CeresSmootherTest, SurfaceFreeKeepsALinkAsProgrammedAndDoesNotSmoothAcros
   EXPECT_EQ(kept.poses[100].p_w_tip, linked.poses[100].p_w_tip);
   EXPECT_EQ(kept.poses[100].a_w, linked.poses[100].a_w);
   EXPECT_TRUE(kept.poses[100].link);
-  // The cuts on either side come out as if each were a program of its own.
+  // The cut before the link comes out as if it were a program of its own,
+  // and both cuts as smooth as when smoothed apart.
   ToolPath before_link = stepped;
   before_link.poses.resize(100);
   const ToolPath alone = SmoothSurfaceFree(before_link, options, &report);
@@ -201,6 +202,19 @@ TEST_F(CeresSmootherTest, SurfaceFreeKeepsALinkAsProgrammedAndDoesNotSmoothAcros
   }
   EXPECT_GT(s.motion.axes[kC].peak_second_derivative_per_mm2,
             2 * k.motion.axes[kC].peak_second_derivative_per_mm2);
+}
+
+// A family whose weights are all zero is not built: it would add nothing to
+// the cost, only work (zero Jacobians through the linear algebra).
+TEST_F(CeresSmootherTest, ZeroWeightFamiliesAreNotBuilt) {
+  HighAccuracyOptions options = SurfaceFreeOptions();  // w_third = w_tip_third = 0
+  HighAccuracyReport report;
+  SmoothSurfaceFree(spiked_, options, &report);
+  EXPECT_EQ(report.final_cost_by_family.count("third"), 0u);
+  EXPECT_EQ(report.final_cost_by_family.count("second"), 1u);
+  options.w_tip_third = 1e-6;
+  SmoothSurfaceFree(spiked_, options, &report);
+  EXPECT_EQ(report.final_cost_by_family.count("third"), 1u);
 }
 
 TEST_F(CeresSmootherTest, RejectsMismatchedInputsAndBadOptions) {

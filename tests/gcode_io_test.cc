@@ -277,15 +277,15 @@ TEST(GcodeCliTest, SurfaceFreeSmoothingOfLinuxCncsImpellerProgram) {
     const ToolPose &b = before.poses[i], &a = after.poses[i];
     // Rapids unchanged (to the written precision).
     if (b.rapid || (i + 1 < n && before.poses[i + 1].rapid) || i == 0) {
-      EXPECT_LT((a.p_w_tip - b.p_w_tip).norm(), 2e-4) << i;
+      EXPECT_LT((a.p_w_tip - b.p_w_tip).norm(), 2e-6) << i;
       continue;
     }
     const size_t lo = i - 1, hi = i + 1;
     const Eigen::Vector3d t = (before.poses[hi].p_w_tip - before.poses[lo].p_w_tip).normalized();
     const Eigen::Vector3d d = a.p_w_tip - b.p_w_tip;
-    // Within the tolerances, plus the 1e-4 rounding of the written program.
-    EXPECT_LE((d - d.dot(t) * t).norm(), 0.01 + 2e-4) << i;
-    EXPECT_LE(std::acos(std::min(1.0, a.a_w.dot(b.a_w))) * 180 / M_PI, 0.5 + 1e-3) << i;
+    // Within the tolerances, plus the 1e-6 rounding of the written program.
+    EXPECT_LE((d - d.dot(t) * t).norm(), 0.01 + 2e-6) << i;
+    EXPECT_LE(std::acos(std::min(1.0, a.a_w.dot(b.a_w))) * 180 / M_PI, 0.5 + 1e-5) << i;
   }
   EXPECT_EQ(Interpret(out).size(), n);
   // The six G1s that index from one blade to the next (at 40 times the
@@ -309,6 +309,12 @@ TEST(GcodeCliTest, SurfaceFreeSmoothingOfLinuxCncsImpellerProgram) {
               0.5 * m_before.motion.axes[axis].peak_second_derivative_per_mm2)
         << axis;
   }
+  // The report agrees: six links, and the sim machine's limits kept as written.
+  const nlohmann::json j = testing::ReadJson(report);
+  EXPECT_EQ(j["input"]["link_moves"], 6);
+  EXPECT_EQ(j["output"]["link_moves"], 6);
+  EXPECT_EQ(j["input"]["limit_violations"], 18);
+  EXPECT_EQ(j["output"]["limit_violations"], 0);
   // Every rapid as programmed, as LinuxCNC reads both programs: the same
   // X Y Z A C to the written precision, C's winding and C at A = 0 included
   // (the original's M428/M429 need the sim's M-files, so a copy leaves

@@ -18,7 +18,8 @@ ToolPath PathWithFeeds(const std::vector<double>& feeds) {
 }
 
 TEST(LinkMovesTest, MarksFeedMovesAtTheRatioTimesTheMedianFeed) {
-  // Feed moves 100 100 100 110 120 5000: median (upper) 110, threshold 1100.
+  // Feed moves 100 100 100 110 120 1100 5000 (the rapid's 9000 is not one):
+  // median 110, threshold 1100.
   ToolPath path = PathWithFeeds({100, 120, 100, 5000, 110, 9000, 100, 1100});
   path.poses[6].rapid = true;  // a rapid is never a link, whatever its feed
   LinkMoveOptions options;

@@ -167,6 +167,39 @@ TEST(SplineSmootherTest, IsDeterministicAndLeavesRapidsAlone) {
   EXPECT_TRUE(a.poses[0].rapid);
 }
 
+// A 2 deg turn of the table on a link splits the path into two runs: the
+// link's target and the pose before it stay as programmed, and neither run
+// sees the step. The same step on a feed move is a zone, smoothed over.
+TEST(SplineSmootherTest, SplitsRunsAtALinkAndKeepsItsEnds) {
+  const Fixture f = Make();
+  ToolPath stepped = f.clean;
+  const size_t k = stepped.poses.size() / 2;
+  for (size_t i = k; i < stepped.poses.size(); ++i) {
+    stepped.poses[i].a_w =
+        Eigen::AngleAxisd(2 * kDeg, Eigen::Vector3d::UnitZ()) * stepped.poses[i].a_w;
+  }
+  ToolPath linked = stepped;
+  linked.poses[k].link = true;
+  ToolPath kept, smoothed;
+  SplineSmootherReport report;
+  ASSERT_TRUE(SmoothWithSplines(linked, f.machine, &f.surface, *f.clean.cutter,
+                                SplineSmootherOptions(), &kept, &report)
+                  .ok());
+  ASSERT_EQ(kept.poses.size(), linked.poses.size());
+  for (size_t i : {k - 1, k}) {
+    EXPECT_EQ(kept.poses[i].p_w_tip, linked.poses[i].p_w_tip) << i;
+    EXPECT_EQ(kept.poses[i].a_w, linked.poses[i].a_w) << i;
+  }
+  EXPECT_TRUE(kept.poses[k].link);
+  ASSERT_TRUE(SmoothWithSplines(stepped, f.machine, &f.surface, *f.clean.cutter,
+                                SplineSmootherOptions(), &smoothed, &report)
+                  .ok());
+  ASSERT_EQ(smoothed.poses.size(), stepped.poses.size());
+  EXPECT_GT(std::acos(std::min(1.0, smoothed.poses[k].a_w.dot(stepped.poses[k].a_w))), 0.1 * kDeg);
+  const double clean_c = Motion(f, f.clean).axes[kC].peak_second_derivative_per_mm2;
+  EXPECT_LT(Motion(f, kept).axes[kC].peak_second_derivative_per_mm2, 2 * clean_c);
+}
+
 TEST(SplineSmootherTest, InsertsTransitionPosesInZonesWhenAsked) {
   const Fixture f = Make();
   ToolPath out;

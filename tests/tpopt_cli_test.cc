@@ -210,7 +210,7 @@ TEST(TpoptCliTest, SmoothAndEvaluateMarkLinksByTheirFeed) {
   auto r = RunCommand(Tpopt("evaluate --in=" + cl + " --report=" + dir.File("e.json")));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(ReadJson(dir.File("e.json"))["link_moves"], 1);
-  EXPECT_NE(r.output.find("1 link moves"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1 link move (feed"), std::string::npos) << r.output;
   r = RunCommand(Tpopt("evaluate --in=" + cl + " --report=" + dir.File("e0.json") +
                        " --link_feed_ratio=0"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
