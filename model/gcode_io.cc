@@ -75,6 +75,7 @@ Status FormatGcode(const ToolPath& path, const Machine& machine, const GcodeOpti
       last_feed = -1.0;
     }
     out.append(line, n);
+    if (p.link && !rapid) out += std::string(" ") + kLinkComment;
     out += '\n';
   }
   if (!o.postamble.empty()) out += o.postamble + "\n";
@@ -122,6 +123,7 @@ class GcodeReader {
     for (int n = 1; std::getline(in, line); ++n) {
       if (!StripComments(line, &code)) return Error(n, "unbalanced parenthesis in a comment");
       if (code.empty() || code == "%") continue;
+      link_mark_ = line.find(kLinkComment) != std::string::npos;
       Status s = Block(code, n);
       if (!s.ok()) return s;
     }
@@ -229,6 +231,7 @@ class GcodeReader {
     }
     ToolPose pose;
     pose.rapid = motion_ == 0;
+    pose.link = !pose.rapid && link_mark_;
     pose.source_line = n;
     const double a = position_[3], c = position_[4];
     if (style_ == GcodeStyle::kTcp) {
@@ -270,6 +273,7 @@ class GcodeReader {
   double scale_ = 1.0;
   bool incremental_ = false;
   bool inverse_time_ = false;
+  bool link_mark_ = false;  // the current line carries kLinkComment
   double feed_ = 0.0;
 };
 

@@ -23,6 +23,11 @@ namespace tpopt {
 
 enum class GcodeStyle { kTcp, kJoint };
 
+// The comment written on the G1 of a link (model/link_moves.h) and read back
+// as one: a written program keeps its links whatever feed the scheduler gave
+// them. Controllers ignore it like any comment.
+constexpr char kLinkComment[] = "(link)";
+
 struct GcodeOptions {
   GcodeStyle style = GcodeStyle::kTcp;
   bool inverse_time = false;  // G93 instead of G94

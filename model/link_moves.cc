@@ -29,21 +29,22 @@ bool HasFeed(const ToolPath& path, size_t i) {
 int MarkLinkMoves(const LinkMoveOptions& options, ToolPath* path) {
   std::vector<double> feeds;
   for (size_t i = 0; i < path->poses.size(); ++i) {
-    path->poses[i].link = false;
-    if (HasFeed(*path, i)) feeds.push_back(path->poses[i].feed_mm_per_min);
+    ToolPose& pose = path->poses[i];
+    pose.link = options.feed_ratio > 0 && pose.link && i > 0 && !pose.rapid;
+    if (HasFeed(*path, i)) feeds.push_back(pose.feed_mm_per_min);
   }
-  if (options.feed_ratio <= 0 || feeds.size() < 2) return 0;
-  const auto middle = feeds.begin() + feeds.size() / 2;
-  std::nth_element(feeds.begin(), middle, feeds.end());
-  const double threshold = options.feed_ratio * *middle;
-  int links = 0;
-  for (size_t i = 0; i < path->poses.size(); ++i) {
-    if (HasFeed(*path, i) && path->poses[i].feed_mm_per_min >= threshold) {
-      path->poses[i].link = true;
-      ++links;
+  if (options.feed_ratio > 0 && feeds.size() >= 2) {
+    const auto middle = feeds.begin() + feeds.size() / 2;
+    std::nth_element(feeds.begin(), middle, feeds.end());
+    const double threshold = options.feed_ratio * *middle;
+    for (size_t i = 0; i < path->poses.size(); ++i) {
+      if (HasFeed(*path, i) && path->poses[i].feed_mm_per_min >= threshold) {
+        path->poses[i].link = true;
+      }
     }
   }
-  return links;
+  return static_cast<int>(std::count_if(path->poses.begin(), path->poses.end(),
+                                         [](const ToolPose& p) { return p.link; }));
 }
 
 }  // namespace tpopt

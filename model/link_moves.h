@@ -21,9 +21,11 @@ struct LinkMoveOptions {
   bool IsValid(std::string* why) const;
 };
 
-// Sets ToolPose::link on the feed moves that are links by `options` (and
-// clears it on every other pose); returns how many are. Moves without a feed
-// are never links, and neither is anything when fewer than two moves have one.
+// Marks as links, besides the moves the source already marked (the G-code
+// reader's kLinkComment), the feed moves at feed_ratio times the median feed
+// or more; returns how many links the path has. feed_ratio 0 means no links
+// at all and clears every mark. A move without a feed is never marked by its
+// feed, and nothing is when fewer than two moves have one.
 int MarkLinkMoves(const LinkMoveOptions& options, ToolPath* path);
 
 }  // namespace tpopt

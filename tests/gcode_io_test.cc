@@ -78,6 +78,7 @@ class GcodeIoTest : public ::testing::Test {
     g.poses = 40;
     ASSERT_TRUE(GenerateFlankPath(surface, g, &path_).ok());
     path_.poses[20].rapid = true;  // a rapid in the middle stays a rapid
+    path_.poses[30].link = true;   // and a link a link (kLinkComment)
   }
 
   Machine machine_;
@@ -102,6 +103,7 @@ TEST_F(GcodeIoTest, RoundTripsInBothStylesAndFeedModes) {
         EXPECT_LT((back.poses[i].p_w_tip - path_.poses[i].p_w_tip).norm(), 2e-4) << i;
         EXPECT_LT((back.poses[i].a_w - path_.poses[i].a_w).norm(), 1e-5) << i;
         EXPECT_EQ(back.poses[i].rapid, path_.poses[i].rapid || i == 0) << i;
+        EXPECT_EQ(back.poses[i].link, path_.poses[i].link) << i;
         if (!back.poses[i].rapid) {
           EXPECT_NEAR(back.poses[i].feed_mm_per_min, 1000.0, 0.5) << i;
         }
@@ -289,12 +291,12 @@ TEST(GcodeCliTest, SurfaceFreeSmoothingOfLinuxCncsImpellerProgram) {
   }
   EXPECT_EQ(Interpret(out).size(), n);
   // The six G1s that index from one blade to the next (at 40 times the
-  // median feed) are links, their targets written as programmed. The written
-  // program, marked by the input's links (its feeds were scheduled down),
+  // median feed) are links, their targets written as programmed and marked
+  // (kLinkComment, as the feeds were scheduled down). The written program
   // has at most half the input's peak d2A/ds2 and d2C/ds2 over the cuts.
   EXPECT_EQ(MarkLinkMoves(LinkMoveOptions(), &before), 6);
   for (size_t i = 0; i < n; ++i) {
-    after.poses[i].link = before.poses[i].link;
+    EXPECT_EQ(after.poses[i].link, before.poses[i].link) << i;
     if (!before.poses[i].link) continue;
     EXPECT_LT((after.poses[i].p_w_tip - before.poses[i].p_w_tip).norm(), 1e-6) << i;
     EXPECT_LT(std::acos(std::min(1.0, after.poses[i].a_w.dot(before.poses[i].a_w))), 1e-7) << i;

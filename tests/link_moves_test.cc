@@ -29,13 +29,33 @@ TEST(LinkMovesTest, MarksFeedMovesAtTheRatioTimesTheMedianFeed) {
     EXPECT_EQ(IsPositioningMove(path.poses[i]), i == 4 || i == 6 || i == 8) << i;
   }
   // A tighter ratio takes fewer; 0 takes none and clears the marks.
+  ToolPath fresh = PathWithFeeds({100, 120, 100, 5000, 110, 9000, 100, 1100});
+  fresh.poses[6].rapid = true;
   options.feed_ratio = 20;
-  EXPECT_EQ(MarkLinkMoves(options, &path), 1);
-  EXPECT_TRUE(path.poses[4].link);
-  EXPECT_FALSE(path.poses[8].link);
+  EXPECT_EQ(MarkLinkMoves(options, &fresh), 1);
+  EXPECT_TRUE(fresh.poses[4].link);
+  EXPECT_FALSE(fresh.poses[8].link);
   options.feed_ratio = 0;
   EXPECT_EQ(MarkLinkMoves(options, &path), 0);
   for (const ToolPose& p : path.poses) EXPECT_FALSE(p.link);
+}
+
+// A link the source marked (tpopt's "(link)" in G-code) stays one whatever
+// its feed, unless links are off; a rapid or the first pose is never one.
+TEST(LinkMovesTest, KeepsTheSourcesMarks) {
+  ToolPath path = PathWithFeeds({100, 100, 100, 100});
+  path.poses[0].link = true;
+  path.poses[2].link = true;
+  path.poses[3].link = true;
+  path.poses[3].rapid = true;
+  EXPECT_EQ(MarkLinkMoves(LinkMoveOptions(), &path), 1);
+  EXPECT_TRUE(path.poses[2].link);
+  EXPECT_FALSE(path.poses[0].link);
+  EXPECT_FALSE(path.poses[3].link);
+  LinkMoveOptions off;
+  off.feed_ratio = 0;
+  EXPECT_EQ(MarkLinkMoves(off, &path), 0);
+  EXPECT_FALSE(path.poses[2].link);
 }
 
 TEST(LinkMovesTest, MovesWithoutAFeedAreNeverLinks) {
