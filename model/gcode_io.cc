@@ -123,8 +123,7 @@ class GcodeReader {
     for (int n = 1; std::getline(in, line); ++n) {
       if (!StripComments(line, &code)) return Error(n, "unbalanced parenthesis in a comment");
       if (code.empty() || code == "%") continue;
-      link_mark_ = line.find(kLinkComment) != std::string::npos;
-      Status s = Block(code, n);
+      Status s = Block(code, n, line.find(kLinkComment) != std::string::npos);
       if (!s.ok()) return s;
     }
     if (path_->poses.empty()) return Status::Error(name_ + ": no G0/G1 move: the path is empty");
@@ -173,7 +172,8 @@ class GcodeReader {
     return Status::Ok();
   }
 
-  Status Block(const std::string& code, int n) {
+  // `link`: the line carries kLinkComment.
+  Status Block(const std::string& code, int n, bool link) {
     std::vector<std::pair<char, double>> words;
     Status s = Words(code, n, &words);
     if (!s.ok()) return s;
@@ -220,10 +220,10 @@ class GcodeReader {
     }
     if (axes.empty()) return Status::Ok();
     if (motion_ < 0) return Error(n, "axis words before any G0/G1");
-    return Move(axes, n);
+    return Move(axes, n, link);
   }
 
-  Status Move(const std::map<char, double>& axes, int n) {
+  Status Move(const std::map<char, double>& axes, int n, bool link) {
     for (const auto& [letter, value] : axes) {
       const int k = letter == 'X' ? 0 : letter == 'Y' ? 1 : letter == 'Z' ? 2 : letter == 'A' ? 3 : 4;
       const double v = k < 3 ? value * scale_ : value / kRadToDeg;
@@ -231,7 +231,7 @@ class GcodeReader {
     }
     ToolPose pose;
     pose.rapid = motion_ == 0;
-    pose.link = !pose.rapid && link_mark_;
+    pose.link = !pose.rapid && link;
     pose.source_line = n;
     const double a = position_[3], c = position_[4];
     if (style_ == GcodeStyle::kTcp) {
@@ -273,7 +273,6 @@ class GcodeReader {
   double scale_ = 1.0;
   bool incremental_ = false;
   bool inverse_time_ = false;
-  bool link_mark_ = false;  // the current line carries kLinkComment
   double feed_ = 0.0;
 };
 

@@ -43,8 +43,12 @@ int MarkLinkMoves(const LinkMoveOptions& options, ToolPath* path) {
       }
     }
   }
-  return static_cast<int>(std::count_if(path->poses.begin(), path->poses.end(),
-                                         [](const ToolPose& p) { return p.link; }));
+  return CountLinks(*path);
+}
+
+int CountLinks(const ToolPath& path) {
+  return static_cast<int>(std::count_if(path.poses.begin(), path.poses.end(),
+                                        [](const ToolPose& p) { return p.link; }));
 }
 
 }  // namespace tpopt

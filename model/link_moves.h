@@ -28,6 +28,9 @@ struct LinkMoveOptions {
 // feed, and nothing is when fewer than two moves have one.
 int MarkLinkMoves(const LinkMoveOptions& options, ToolPath* path);
 
+// How many poses of `path` are link targets.
+int CountLinks(const ToolPath& path);
+
 }  // namespace tpopt
 
 #endif  // TPOPT_MODEL_LINK_MOVES_H_

@@ -4,6 +4,8 @@
 
 #include <glog/logging.h>
 
+#include "model/link_moves.h"
+
 namespace tpopt {
 
 Status EvaluatePath(const ToolPath& path, const Machine& machine, const RuledSurface* surface,
@@ -12,8 +14,7 @@ Status EvaluatePath(const ToolPath& path, const Machine& machine, const RuledSur
   CHECK(metrics != nullptr);
   PathMetrics out;
   out.poses = static_cast<int>(path.poses.size());
-  out.link_moves = static_cast<int>(std::count_if(
-      path.poses.begin(), path.poses.end(), [](const ToolPose& p) { return p.link; }));
+  out.link_moves = CountLinks(path);
   std::vector<JointVector> joints;
   Status s = machine.AssignJoints(path, &joints, &out.warning);
   if (!s.ok()) return s;
