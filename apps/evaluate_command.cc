@@ -50,6 +50,7 @@ int RunEvaluate(const Invocation& invocation) {
   report["command"] = invocation.command_line;
   report["input_file"] = FLAGS_in;
   report["surface"] = FLAGS_surface;
+  if (job.surface_cad) report["surface_cad"] = CadInfoJson(*job.surface_cad);
   report["machine"] = job.machine.name;
   report["cutter"] = {{"radius_mm", job.cutter.radius_mm},
                       {"flute_length_mm", job.cutter.flute_length_mm}};

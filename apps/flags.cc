@@ -1,6 +1,19 @@
 #include "apps/flags.h"
 
-DEFINE_string(surface, "", "Ruled surface JSON (DESIGN.md format).");
+DEFINE_string(surface, "",
+              "The surface: tpopt's JSON (DESIGN.md format), or a face of a STEP (.stp, .step) or "
+              "IGES (.igs, .iges) file.");
+DEFINE_int32(face, -1,
+             "STEP/IGES --surface: the face to read, 0-based (-1: the file must hold one face; "
+             "otherwise the error lists them).");
+DEFINE_string(ruling, "",
+              "STEP/IGES --surface: the face parameter (u or v) along the ruling; empty detects "
+              "it (the direction of degree 1, else the one closer to ruled).");
+DEFINE_bool(flip_cutter_side, false,
+            "STEP/IGES --surface: put the cutter on the side opposite the face's outward normal.");
+DEFINE_double(max_ruled_deviation_mm, 0.01,
+              "STEP/IGES --surface: refuse a face that is not exactly ruled when it lies farther "
+              "than this from the ruled surface between its boundary curves, mm.");
 DEFINE_string(machine, "", "Machine JSON (xyzac-trt kinematics and axis limits).");
 DEFINE_string(in, "", "Input tool path: APT CL (.cls, .apt, .cl) or LinuxCNC G-code (.ngc, .nc).");
 DEFINE_string(out, "",

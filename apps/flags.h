@@ -6,6 +6,10 @@
 
 // Inputs and outputs.
 DECLARE_string(surface);
+DECLARE_int32(face);
+DECLARE_string(ruling);
+DECLARE_bool(flip_cutter_side);
+DECLARE_double(max_ruled_deviation_mm);
 DECLARE_string(machine);
 DECLARE_string(in);
 DECLARE_string(out);

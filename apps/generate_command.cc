@@ -42,7 +42,7 @@ int RunGenerate(const Invocation&) {
   RuledSurface surface;
   Machine machine;
   ToolPath path;
-  s = ReadSurfaceJson(FLAGS_surface, &surface);
+  s = LoadRuledSurface(FLAGS_surface, &surface, nullptr);
   if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
   if (s.ok()) s = GenerateFlankPath(surface, options, &path);
   if (s.ok()) s = SaveToolPath(FLAGS_out, machine, path);

@@ -41,7 +41,79 @@ GcodeStyle StyleOf(const std::string& flag) {
   return flag == "joint" ? GcodeStyle::kJoint : GcodeStyle::kTcp;
 }
 
+CadReadOptions CadOptionsFromFlags() {
+  CadReadOptions options;
+  options.face_index = FLAGS_face;
+  options.ruling = FLAGS_ruling;
+  options.flip_cutter_side = FLAGS_flip_cutter_side;
+  options.max_ruled_deviation_mm = FLAGS_max_ruled_deviation_mm;
+  return options;
+}
+
 }  // namespace
+
+Status LoadRuledSurface(const std::string& path, RuledSurface* surface,
+                        std::optional<CadSurfaceInfo>* cad) {
+  if (!IsCadSurfacePath(path)) return ReadSurfaceJson(path, surface);
+  CadSurfaceInfo info;
+  Status s = ReadCadRuledSurface(path, CadOptionsFromFlags(), surface, &info);
+  if (s.ok() && cad != nullptr) *cad = info;
+  return s;
+}
+
+Status LoadFreeformSurface(const std::string& path, FreeformSurface* surface,
+                           std::optional<CadSurfaceInfo>* cad) {
+  if (!IsCadSurfacePath(path)) return ReadFreeformSurfaceJson(path, surface);
+  CadSurfaceInfo info;
+  BSplineSurface bspline;
+  double side_sign = 1.0;
+  Status s = ReadCadBSplineSurface(path, CadOptionsFromFlags(), &bspline, &side_sign, &info);
+  if (!s.ok()) return s;
+  const std::string what = path + ": face " + std::to_string(info.face.index);
+  if (bspline.degree_u() != 3 || bspline.degree_v() != 3) {
+    return Status::Error(what + ": degree " + std::to_string(bspline.degree_u()) + " x " +
+                         std::to_string(bspline.degree_v()) + ", stripwidth needs bicubic");
+  }
+  std::vector<std::vector<Eigen::Vector3d>> net(bspline.rows(),
+                                                std::vector<Eigen::Vector3d>(bspline.cols()));
+  for (int i = 0; i < bspline.rows(); ++i) {
+    for (int j = 0; j < bspline.cols(); ++j) net[i][j] = bspline.control_point(i, j);
+  }
+  const size_t slash = path.find_last_of('/');
+  s = FreeformSurface::Create(path.substr(slash == std::string::npos ? 0 : slash + 1) + " face " +
+                                  std::to_string(info.face.index),
+                              bspline.knots_u(), bspline.knots_v(), net, side_sign, what, surface);
+  if (s.ok() && cad != nullptr) *cad = info;
+  return s;
+}
+
+Status LoadBSplineSurface(const std::string& path, BSplineSurface* surface,
+                          std::optional<CadSurfaceInfo>* cad) {
+  if (!IsCadSurfacePath(path)) return ReadBSplineSurfaceJson(path, surface);
+  CadSurfaceInfo info;
+  double side_sign = 1.0;
+  Status s = ReadCadBSplineSurface(path, CadOptionsFromFlags(), surface, &side_sign, &info);
+  if (s.ok() && cad != nullptr) *cad = info;
+  return s;
+}
+
+nlohmann::json CadInfoJson(const CadSurfaceInfo& info) {
+  nlohmann::json j = {{"file", info.file},
+                      {"length_unit", info.length_unit},
+                      {"faces_in_file", info.face_count},
+                      {"face", info.face.index},
+                      {"surface_type", info.face.surface_type},
+                      {"degree", {info.face.degree_u, info.face.degree_v}},
+                      {"poles", {info.face.poles_u, info.face.poles_v}},
+                      {"trimmed", info.trimmed},
+                      {"face_reversed", info.face_reversed}};
+  if (!info.ruling.empty()) {
+    j["ruling"] = info.ruling;
+    j["exact_ruled"] = info.exact_ruled;
+    j["ruled_deviation_mm"] = info.ruled_deviation_mm;
+  }
+  return j;
+}
 
 Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
                     ToolPath* tool_path) {
@@ -110,7 +182,9 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   Status s = LoadMachine(FLAGS_machine, &job->machine);
   if (s.ok()) s = LoadToolPath(FLAGS_in, job->machine, quiet, &job->path);
   if (s.ok()) MarkLinkMoves(links, &job->path);
-  if (s.ok() && job->has_surface) s = ReadSurfaceJson(FLAGS_surface, &job->surface);
+  if (s.ok() && job->has_surface) {
+    s = LoadRuledSurface(FLAGS_surface, &job->surface, &job->surface_cad);
+  }
   if (s.ok()) {
     s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius, FLAGS_flute_length,
                       &job->cutter);

@@ -7,7 +7,12 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "model/apt_io.h"
+#include "model/bspline_surface.h"
+#include "model/cad_io.h"
+#include "model/freeform_surface.h"
 #include "model/cutter.h"
 #include "model/link_moves.h"
 #include "model/machine.h"
@@ -39,12 +44,33 @@ Status LoadMachine(const std::string& path, Machine* machine);
 Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
                      double flute_flag_mm, Cutter* cutter);
 
+// --surface as a ruled surface: tpopt's JSON, or a STEP/IGES face chosen
+// by --face, --ruling, --flip_cutter_side and --max_ruled_deviation_mm, in
+// which case *cad (if not null) says what was read.
+Status LoadRuledSurface(const std::string& path, RuledSurface* surface,
+                        std::optional<CadSurfaceInfo>* cad);
+
+// --surface as a bicubic free-form surface (stripwidth): JSON or a STEP/IGES
+// face (--face, --flip_cutter_side).
+Status LoadFreeformSurface(const std::string& path, FreeformSurface* surface,
+                           std::optional<CadSurfaceInfo>* cad);
+
+// --surface as a B-spline surface of degree 1 to 3 (pencil): JSON or a
+// STEP/IGES face (--face).
+Status LoadBSplineSurface(const std::string& path, BSplineSurface* surface,
+                          std::optional<CadSurfaceInfo>* cad);
+
+// The report's "surface_cad" object: file, unit, face, ruling, exactness,
+// ruled deviation, trim and orientation.
+nlohmann::json CadInfoJson(const CadSurfaceInfo& info);
+
 // Everything a subcommand reads, loaded from --in, --surface, --machine,
 // --cutter_radius and --flute_length.
 struct Job {
   ToolPath path;
   RuledSurface surface;
   bool has_surface = false;
+  std::optional<CadSurfaceInfo> surface_cad;  // set when --surface is STEP or IGES
   Machine machine;
   Cutter cutter;
   const RuledSurface* surface_or_null() const { return has_surface ? &surface : nullptr; }

@@ -64,7 +64,9 @@ int RunPencil(const Invocation& invocation) {
 
   PencilJob job;
   Machine machine;
-  s = LoadPencilJob(FLAGS_surface, FLAGS_curve, pencil.ball_radius_mm, &job);
+  std::optional<CadSurfaceInfo> cad;
+  s = LoadBSplineSurface(FLAGS_surface, &job.surface, &cad);
+  if (s.ok()) s = CompletePencilJob(FLAGS_curve, pencil.ball_radius_mm, &job);
   if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   std::vector<PencilRun> runs;
@@ -82,7 +84,9 @@ int RunPencil(const Invocation& invocation) {
   }
   s = SaveToolPath(FLAGS_out, machine, fit.path, fit.spans);
   if (s.ok() && !FLAGS_report.empty()) {
-    s = WriteReport(FLAGS_report, PencilReportJson(invocation, pencil, fit, runs.size()));
+    nlohmann::json report = PencilReportJson(invocation, pencil, fit, runs.size());
+    if (cad) report["surface_cad"] = CadInfoJson(*cad);
+    s = WriteReport(FLAGS_report, report);
   }
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   if (fit.folded_points > 0) {

@@ -44,7 +44,9 @@ Status WriteOutputs(const Invocation& invocation, const Job& job, const Smoothin
                     const ToolPath& written, const std::vector<AptCurveSpan>& spans) {
   Status s = SaveToolPath(FLAGS_out, job.machine, written, spans);
   if (s.ok() && !FLAGS_report.empty()) {
-    s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));
+    nlohmann::json report = SmoothReportJson(invocation, FLAGS_mode, result);
+    if (job.surface_cad) report["surface_cad"] = CadInfoJson(*job.surface_cad);
+    s = WriteReport(FLAGS_report, report);
   }
   if (s.ok()) {
     s = WritePictures("tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in,

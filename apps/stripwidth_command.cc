@@ -125,7 +125,8 @@ int RunStripWidth(const Invocation& invocation) {
   Machine machine;
   std::vector<StripPoint> points;
   const auto start = std::chrono::steady_clock::now();
-  s = ReadFreeformSurfaceJson(FLAGS_surface, &surface);
+  std::optional<CadSurfaceInfo> cad;
+  s = LoadFreeformSurface(FLAGS_surface, &surface, &cad);
   if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
   if (s.ok()) {
     s = PlanStripPath(surface, cutter, options, &points);
@@ -152,6 +153,7 @@ int RunStripWidth(const Invocation& invocation) {
     report["command"] = invocation.command_line;
     report["method"] = FLAGS_method;
     report["surface"] = FLAGS_surface;
+    if (cad) report["surface_cad"] = CadInfoJson(*cad);
     report["machine"] = machine.name;
     report["cutter"] = {{"radius_mm", cutter.radius_mm},
                         {"corner_radius_mm", cutter.corner_radius_mm}};

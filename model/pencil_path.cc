@@ -165,7 +165,11 @@ Status GeneratePencilRuns(const PencilGeometry& geometry, const std::vector<BSpl
 Status LoadPencilJob(const std::string& surface_path, const std::string& curve_path,
                      double ball_radius_mm, PencilJob* job) {
   Status s = ReadBSplineSurfaceJson(surface_path, &job->surface);
-  if (s.ok()) s = ReadGuideCurvesJson(curve_path, &job->guides, &job->placement);
+  return s.ok() ? CompletePencilJob(curve_path, ball_radius_mm, job) : s;
+}
+
+Status CompletePencilJob(const std::string& curve_path, double ball_radius_mm, PencilJob* job) {
+  Status s = ReadGuideCurvesJson(curve_path, &job->guides, &job->placement);
   if (!s.ok()) return s;
   s = PencilGeometry::Create(job->surface, job->placement, ball_radius_mm, &job->geometry);
   if (!s.ok()) return Status::Error(curve_path + ": " + s.message());

@@ -105,6 +105,11 @@ struct PencilJob {
 Status LoadPencilJob(const std::string& surface_path, const std::string& curve_path,
                      double ball_radius_mm, PencilJob* job);
 
+// LoadPencilJob for a job whose surface is already set (read from a CAD
+// file): reads the guide curves and builds the geometry.
+Status CompletePencilJob(const std::string& curve_path, double ball_radius_mm, PencilJob* job);
+
+
 }  // namespace tpopt
 
 #endif  // TPOPT_MODEL_PENCIL_PATH_H_

@@ -1,0 +1,827 @@
+#include "model/cad_io.h"
+
+#include <unistd.h>
+
+#include <APIHeaderSection_MakeHeader.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <GeomFill_BSplineCurves.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_BSplineSurface.hxx>
+#include <Geom_BezierSurface.hxx>
+#include <Geom_RectangularTrimmedSurface.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Controller.hxx>
+#include <IGESControl_Reader.hxx>
+#include <IGESControl_Writer.hxx>
+#include <IGESData_GlobalSection.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <IGESData_IGESWriter.hxx>
+#include <IGESSelect_WorkLibrary.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <Message_PrinterOStream.hxx>
+#include <STEPControl_Reader.hxx>
+#include <STEPControl_Writer.hxx>
+#include <Standard_Failure.hxx>
+#include <StepData_StepModel.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColStd_Array2OfReal.hxx>
+#include <TColStd_SequenceOfAsciiString.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TColgp_Array2OfPnt.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Face.hxx>
+#include <TopoDS_Shape.hxx>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <gp_Pln.hxx>
+#include <limits>
+#include <sstream>
+
+#include "model/atomic_file.h"
+
+namespace tpopt {
+namespace {
+
+constexpr int kDeviationGrid =
+    41;  // face points per direction for ruled_deviation_mm
+constexpr double kPoleTolMm = 1e-9;
+
+std::string Lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), ::tolower);
+  return s;
+}
+
+std::string Extension(const std::string& path) {
+  const size_t dot = path.find_last_of('.');
+  const size_t slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  return Lower(path.substr(dot + 1));
+}
+
+bool IsStep(const std::string& path) {
+  const std::string ext = Extension(path);
+  return ext == "stp" || ext == "step";
+}
+
+std::string Stem(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const size_t dot = name.find_last_of('.');
+  return dot == std::string::npos ? name : name.substr(0, dot);
+}
+
+// OCCT reports through its default messenger on stdout; tpopt's own
+// messages say what went wrong, and stdout may carry a program's output.
+void SilenceOcct() {
+  static const bool silenced = [] {
+    Message::DefaultMessenger()->RemovePrinters(
+        STANDARD_TYPE(Message_PrinterOStream));
+    return true;
+  }();
+  (void)silenced;
+}
+
+std::string FailureText(const Standard_Failure& failure) {
+  const char* text = failure.GetMessageString();
+  return std::string(failure.DynamicType()->Name()) +
+         (text != nullptr && *text != '\0' ? std::string(" (") + text + ")"
+                                           : "");
+}
+
+Status ReadText(const std::string& path, std::string* text) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Status::Error(path + ": cannot open");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  *text = buffer.str();
+  return Status::Ok();
+}
+
+// OCCT's parsers accept a file cut short and return what they parsed; the
+// end markers tell a truncated file from one that holds no surface.
+Status CheckComplete(const std::string& path, const std::string& text) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+    return Status::Error(path + ": the file is empty");
+  }
+  if (IsStep(path)) {
+    if (text.find("END-ISO-10303-21") == std::string::npos) {
+      return Status::Error(path +
+                           ": truncated STEP file (no END-ISO-10303-21 line)");
+    }
+    return Status::Ok();
+  }
+  // IGES: the last record is the Terminate section, 'T' in column 73.
+  size_t end = text.find_last_not_of(" \r\n");
+  const size_t start = text.rfind('\n', end);
+  const std::string last =
+      text.substr(start == std::string::npos ? 0 : start + 1,
+                  end - (start == std::string::npos ? 0 : start + 1) + 1);
+  if (last.size() < 73 || last[72] != 'T') {
+    return Status::Error(path + ": truncated IGES file (no Terminate section)");
+  }
+  return Status::Ok();
+}
+
+struct LoadedFile {
+  std::vector<TopoDS_Face> faces;
+  std::string length_unit;
+};
+
+Status LoadFaces(const std::string& path, LoadedFile* loaded) {
+  if (!IsCadSurfacePath(path)) {
+    return Status::Error(
+        path + ": not a STEP (.stp, .step) or IGES (.igs, .iges) file");
+  }
+  std::string text;
+  Status s = ReadText(path, &text);
+  if (s.ok()) s = CheckComplete(path, text);
+  if (!s.ok()) return s;
+  SilenceOcct();
+  TopoDS_Shape shape;
+  if (IsStep(path)) {
+    STEPControl_Reader reader;
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
+      return Status::Error(path + ": not a readable STEP file");
+    }
+    reader.TransferRoots();
+    shape = reader.OneShape();
+    TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
+    reader.FileUnits(lengths, angles, solid_angles);
+    if (!lengths.IsEmpty()) loaded->length_unit = lengths.First().ToCString();
+  } else {
+    IGESControl_Reader reader;
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
+      return Status::Error(path + ": not a readable IGES file");
+    }
+    reader.TransferRoots();
+    shape = reader.OneShape();
+    const Handle(TCollection_HAsciiString) unit =
+        reader.IGESModel()->GlobalSection().UnitName();
+    if (!unit.IsNull()) loaded->length_unit = unit->ToCString();
+  }
+  if (!shape.IsNull()) {
+    for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next()) {
+      loaded->faces.push_back(TopoDS::Face(e.Current()));
+    }
+  }
+  if (loaded->faces.empty())
+    return Status::Error(path + ": the file holds no surface (no face)");
+  return Status::Ok();
+}
+
+// The face's surface without rectangular trims, and whether the face is
+// trimmed (its parameter bounds inside the surface's, or inner wires).
+Handle(Geom_Surface) NaturalSurface(const TopoDS_Face& face, bool* trimmed) {
+  Handle(Geom_Surface) surface = BRep_Tool::Surface(face);
+  *trimmed = false;
+  if (surface.IsNull()) return surface;
+  while (true) {
+    Handle(Geom_RectangularTrimmedSurface) t =
+        Handle(Geom_RectangularTrimmedSurface)::DownCast(surface);
+    if (t.IsNull()) break;
+    surface = t->BasisSurface();
+  }
+  double u0, u1, v0, v1, fu0, fu1, fv0, fv1;
+  surface->Bounds(u0, u1, v0, v1);
+  BRepTools::UVBounds(face, fu0, fu1, fv0, fv1);
+  const double tol_u = 1e-9 * std::max(1.0, std::abs(u1 - u0));
+  const double tol_v = 1e-9 * std::max(1.0, std::abs(v1 - v0));
+  const bool finite = std::isfinite(u0) && std::isfinite(u1) &&
+                      std::isfinite(v0) && std::isfinite(v1);
+  if (finite && (fu0 > u0 + tol_u || fu1 < u1 - tol_u || fv0 > v0 + tol_v ||
+                 fv1 < v1 - tol_v)) {
+    *trimmed = true;
+  }
+  int wires = 0;
+  for (TopExp_Explorer e(face, TopAbs_WIRE); e.More(); e.Next()) ++wires;
+  if (wires > 1) *trimmed = true;
+  return surface;
+}
+
+CadFaceSummary Summarize(int index, const Handle(Geom_Surface) & surface) {
+  CadFaceSummary summary;
+  summary.index = index;
+  summary.surface_type =
+      surface.IsNull() ? "no surface" : surface->DynamicType()->Name();
+  Handle(Geom_BSplineSurface) bs =
+      Handle(Geom_BSplineSurface)::DownCast(surface);
+  Handle(Geom_BezierSurface) bz = Handle(Geom_BezierSurface)::DownCast(surface);
+  if (!bs.IsNull()) {
+    summary.degree_u = bs->UDegree();
+    summary.degree_v = bs->VDegree();
+    summary.poles_u = bs->NbUPoles();
+    summary.poles_v = bs->NbVPoles();
+    summary.rational = bs->IsURational() || bs->IsVRational();
+  } else if (!bz.IsNull()) {
+    summary.degree_u = bz->UDegree();
+    summary.degree_v = bz->VDegree();
+    summary.poles_u = bz->NbUPoles();
+    summary.poles_v = bz->NbVPoles();
+    summary.rational = bz->IsURational() || bz->IsVRational();
+  }
+  return summary;
+}
+
+std::string Listing(const std::vector<CadFaceSummary>& faces) {
+  std::string out;
+  for (const CadFaceSummary& f : faces) out += "\n  " + f.Describe();
+  return out;
+}
+
+// The chosen face, with its natural surface as a clamped B-spline.
+struct ChosenFace {
+  CadFaceSummary summary;
+  Handle(Geom_BSplineSurface) bspline;
+  bool trimmed = false;
+  bool reversed = false;
+};
+
+Status ChooseFace(const std::string& path, const LoadedFile& loaded,
+                  int face_index, ChosenFace* chosen) {
+  std::vector<CadFaceSummary> summaries;
+  std::vector<Handle(Geom_Surface)> surfaces;
+  std::vector<bool> trims;
+  for (size_t i = 0; i < loaded.faces.size(); ++i) {
+    bool trimmed = false;
+    surfaces.push_back(NaturalSurface(loaded.faces[i], &trimmed));
+    trims.push_back(trimmed);
+    summaries.push_back(Summarize(static_cast<int>(i), surfaces.back()));
+  }
+  const int n = static_cast<int>(summaries.size());
+  if (face_index < 0 && n > 1) {
+    return Status::Error(
+        path + ": the file holds " + std::to_string(n) +
+        " faces; choose one with --face=N:" + Listing(summaries));
+  }
+  const int index = face_index < 0 ? 0 : face_index;
+  if (index >= n) {
+    return Status::Error(path + ": face " + std::to_string(face_index) +
+                         " does not exist; the file holds " +
+                         std::to_string(n) + (n == 1 ? " face:" : " faces:") +
+                         Listing(summaries));
+  }
+  const std::string what = path + ": face " + std::to_string(index);
+  chosen->summary = summaries[index];
+  chosen->trimmed = trims[index];
+  chosen->reversed = loaded.faces[index].Orientation() == TopAbs_REVERSED;
+  const Handle(Geom_Surface)& surface = surfaces[index];
+  Handle(Geom_BSplineSurface) bs =
+      Handle(Geom_BSplineSurface)::DownCast(surface);
+  Handle(Geom_BezierSurface) bz = Handle(Geom_BezierSurface)::DownCast(surface);
+  if (!bz.IsNull()) {
+    bs = GeomConvert::SurfaceToBSplineSurface(bz);
+  } else if (!bs.IsNull()) {
+    bs = Handle(Geom_BSplineSurface)::DownCast(bs->Copy());
+  } else {
+    return Status::Error(what + " is a " + chosen->summary.surface_type +
+                         ", not a B-spline or Bezier surface");
+  }
+  if (chosen->summary.rational) {
+    double w_min = std::numeric_limits<double>::infinity(), w_max = -w_min;
+    for (int i = 1; i <= bs->NbUPoles(); ++i) {
+      for (int j = 1; j <= bs->NbVPoles(); ++j) {
+        w_min = std::min(w_min, bs->Weight(i, j));
+        w_max = std::max(w_max, bs->Weight(i, j));
+      }
+    }
+    std::ostringstream err;
+    err << what << ": a rational " << chosen->summary.surface_type
+        << " (weights " << w_min << " to " << w_max
+        << "); tpopt takes non-rational B-spline surfaces only";
+    return Status::Error(err.str());
+  }
+  if (bs->IsUPeriodic()) bs->SetUNotPeriodic();
+  if (bs->IsVPeriodic()) bs->SetVNotPeriodic();
+  chosen->bspline = bs;
+  return Status::Ok();
+}
+
+std::vector<double> FlatKnots(const Handle(Geom_BSplineSurface) & bs,
+                              bool along_u) {
+  const int n = along_u ? bs->NbUPoles() + bs->UDegree() + 1
+                        : bs->NbVPoles() + bs->VDegree() + 1;
+  TColStd_Array1OfReal knots(1, n);
+  if (along_u) {
+    bs->UKnotSequence(knots);
+  } else {
+    bs->VKnotSequence(knots);
+  }
+  return std::vector<double>(knots.begin(), knots.end());
+}
+
+Eigen::Vector3d ToEigen(const gp_Pnt& p) {
+  return Eigen::Vector3d(p.X(), p.Y(), p.Z());
+}
+
+// The face's poles as net[a][b], a along the rails, b along the ruling.
+std::vector<std::vector<Eigen::Vector3d>> Net(
+    const Handle(Geom_BSplineSurface) & bs, bool ruling_u) {
+  const int na = ruling_u ? bs->NbVPoles() : bs->NbUPoles();
+  const int nb = ruling_u ? bs->NbUPoles() : bs->NbVPoles();
+  std::vector<std::vector<Eigen::Vector3d>> net(
+      na, std::vector<Eigen::Vector3d>(nb));
+  for (int a = 0; a < na; ++a) {
+    for (int b = 0; b < nb; ++b) {
+      net[a][b] =
+          ToEigen(ruling_u ? bs->Pole(b + 1, a + 1) : bs->Pole(a + 1, b + 1));
+    }
+  }
+  return net;
+}
+
+Status RailsOf(const Handle(Geom_BSplineSurface) & bs, bool ruling_u,
+               const std::string& what, const std::string& name,
+               CutterSide side, RuledSurface* surface) {
+  const auto net = Net(bs, ruling_u);
+  std::vector<Eigen::Vector3d> first, last;
+  for (const auto& row : net) {
+    first.push_back(row.front());
+    last.push_back(row.back());
+  }
+  const int degree = ruling_u ? bs->VDegree() : bs->UDegree();
+  const std::vector<double> knots = FlatKnots(bs, !ruling_u);
+  BSplineCurve rail0, rail1;
+  Status s =
+      BSplineCurve::Create(degree, knots, first, what + ": rail 0", &rail0);
+  if (s.ok())
+    s = BSplineCurve::Create(degree, knots, last, what + ": rail 1", &rail1);
+  if (s.ok()) *surface = RuledSurface(name, rail0, rail1, side);
+  return s;
+}
+
+bool ExactlyRuled(const Handle(Geom_BSplineSurface) & bs, bool ruling_u) {
+  return ruling_u ? bs->UDegree() == 1 && bs->NbUPoles() == 2
+                  : bs->VDegree() == 1 && bs->NbVPoles() == 2;
+}
+
+// The face point at normalised rail parameter s and ruling parameter t.
+gp_Pnt FacePoint(const Handle(Geom_BSplineSurface) & bs, bool ruling_u,
+                 double s, double t) {
+  double u0, u1, v0, v1;
+  bs->Bounds(u0, u1, v0, v1);
+  const double a = ruling_u ? t : s, b = ruling_u ? s : t;
+  return bs->Value(u0 + a * (u1 - u0), v0 + b * (v1 - v0));
+}
+
+// Distance from p to the ruled surface: Gauss-Newton on (u, v) from the
+// point of equal parameters, the smaller of the two distances kept.
+double DistanceToRuled(const RuledSurface& ruled, const Eigen::Vector3d& p,
+                       double u, double v) {
+  double best = (ruled.Point(u, v) - p).norm();
+  for (int iter = 0; iter < 30; ++iter) {
+    const Eigen::Vector3d r = ruled.Point(u, v) - p;
+    Eigen::Matrix<double, 3, 2> j;
+    j.col(0) = ruled.Du(u, v);
+    j.col(1) = ruled.Dv(u);
+    const Eigen::Matrix2d jtj = j.transpose() * j;
+    if (std::abs(jtj.determinant()) < 1e-300) break;
+    const Eigen::Vector2d step = -jtj.ldlt().solve(j.transpose() * r);
+    u = std::clamp(u + step.x(), 0.0, 1.0);
+    v = std::clamp(v + step.y(), 0.0, 1.0);
+    best = std::min(best, (ruled.Point(u, v) - p).norm());
+    if (step.norm() < 1e-14) break;
+  }
+  return best;
+}
+
+double RuledDeviationMm(const Handle(Geom_BSplineSurface) & bs, bool ruling_u,
+                        const RuledSurface& ruled) {
+  double worst = 0.0;
+  for (int i = 0; i < kDeviationGrid; ++i) {
+    for (int j = 0; j < kDeviationGrid; ++j) {
+      const double s = i / (kDeviationGrid - 1.0),
+                   t = j / (kDeviationGrid - 1.0);
+      worst = std::max(
+          worst,
+          DistanceToRuled(ruled, ToEigen(FacePoint(bs, ruling_u, s, t)), s, t));
+    }
+  }
+  return worst;
+}
+
+// Outward normal S_u x S_v of a FORWARD face; the cutter lies on it.
+double OutwardSign(const ChosenFace& face, bool flip) {
+  return (face.reversed ? -1.0 : 1.0) * (flip ? -1.0 : 1.0);
+}
+
+void FillInfo(const std::string& path, const LoadedFile& loaded,
+              const ChosenFace& face, CadSurfaceInfo* info) {
+  info->file = path;
+  info->length_unit = loaded.length_unit;
+  info->face_count = static_cast<int>(loaded.faces.size());
+  info->face = face.summary;
+  info->trimmed = face.trimmed;
+  info->face_reversed = face.reversed;
+}
+
+std::vector<std::pair<double, int>> KnotsAndMults(
+    const std::vector<double>& flat) {
+  std::vector<std::pair<double, int>> out;
+  for (double k : flat) {
+    if (!out.empty() && k == out.back().first) {
+      ++out.back().second;
+    } else {
+      out.push_back({k, 1});
+    }
+  }
+  return out;
+}
+
+void ToOcctKnots(const std::vector<double>& flat, TColStd_Array1OfReal* knots,
+                 TColStd_Array1OfInteger* mults) {
+  const auto km = KnotsAndMults(flat);
+  knots->Resize(1, static_cast<int>(km.size()), false);
+  mults->Resize(1, static_cast<int>(km.size()), false);
+  for (size_t i = 0; i < km.size(); ++i) {
+    knots->SetValue(static_cast<int>(i) + 1, km[i].first);
+    mults->SetValue(static_cast<int>(i) + 1, km[i].second);
+  }
+}
+
+gp_Pnt ToGp(const Eigen::Vector3d& p) { return gp_Pnt(p.x(), p.y(), p.z()); }
+
+Status PatchFace(const CadPatch& patch, int index, TopoDS_Face* face) {
+  const std::string what = "patch " + std::to_string(index);
+  const int nu = static_cast<int>(patch.poles.size());
+  const int nv = nu == 0 ? 0 : static_cast<int>(patch.poles[0].size());
+  if (nu < 2 || nv < 2)
+    return Status::Error(what + ": needs at least 2 x 2 poles");
+  for (const auto& row : patch.poles) {
+    if (static_cast<int>(row.size()) != nv)
+      return Status::Error(what + ": rows differ in length");
+  }
+  const bool rational = !patch.weights.empty();
+  if (rational && (static_cast<int>(patch.weights.size()) != nu ||
+                   static_cast<int>(patch.weights[0].size()) != nv)) {
+    return Status::Error(what + ": weights are not " + std::to_string(nu) +
+                         " x " + std::to_string(nv));
+  }
+  Handle(Geom_Surface) surface;
+  if (patch.as_plane) {
+    const gp_Pnt origin = ToGp(patch.poles[0][0]);
+    const Eigen::Vector3d du = patch.poles.back()[0] - patch.poles[0][0];
+    const Eigen::Vector3d dv = patch.poles[0].back() - patch.poles[0][0];
+    const Eigen::Vector3d n = du.cross(dv);
+    gp_Pln plane(gp_Ax3(origin, gp_Dir(n.x(), n.y(), n.z()),
+                        gp_Dir(du.x(), du.y(), du.z())));
+    BRepBuilderAPI_MakeFace make(plane, 0.0, du.norm(), 0.0, dv.norm());
+    if (!make.IsDone())
+      return Status::Error(what + ": OCCT could not make the plane face");
+    *face = make.Face();
+    if (patch.reversed) face->Reverse();
+    return Status::Ok();
+  }
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  TColStd_Array2OfReal weights(1, nu, 1, nv);
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      poles.SetValue(i + 1, j + 1, ToGp(patch.poles[i][j]));
+      weights.SetValue(i + 1, j + 1, rational ? patch.weights[i][j] : 1.0);
+    }
+  }
+  if (patch.bezier) {
+    surface = rational ? new Geom_BezierSurface(poles, weights)
+                       : new Geom_BezierSurface(poles);
+  } else {
+    if (static_cast<int>(patch.knots_u.size()) != nu + patch.degree_u + 1 ||
+        static_cast<int>(patch.knots_v.size()) != nv + patch.degree_v + 1) {
+      return Status::Error(what +
+                           ": knot counts do not match poles and degrees");
+    }
+    TColStd_Array1OfReal ku(1, 1), kv(1, 1);
+    TColStd_Array1OfInteger mu(1, 1), mv(1, 1);
+    ToOcctKnots(patch.knots_u, &ku, &mu);
+    ToOcctKnots(patch.knots_v, &kv, &mv);
+    if (rational) {
+      surface = new Geom_BSplineSurface(poles, weights, ku, kv, mu, mv,
+                                        patch.degree_u, patch.degree_v);
+    } else {
+      surface = new Geom_BSplineSurface(poles, ku, kv, mu, mv, patch.degree_u,
+                                        patch.degree_v);
+    }
+  }
+  double u0, u1, v0, v1;
+  surface->Bounds(u0, u1, v0, v1);
+  BRepBuilderAPI_MakeFace make(surface, u0, u0 + patch.trim_u * (u1 - u0), v0,
+                               v1, 1e-7);
+  if (!make.IsDone())
+    return Status::Error(what + ": OCCT could not make a face");
+  *face = make.Face();
+  if (patch.reversed) face->Reverse();
+  return Status::Ok();
+}
+
+// Writes the shape to a scratch file with OCCT, then to `path` atomically.
+Status WriteShape(const std::string& path, const TopoDS_Shape& shape,
+                  const CadWriteOptions& options) {
+  std::string scratch = "/tmp/tpopt_cad_XXXXXX";
+  const int fd = mkstemp(scratch.data());
+  if (fd < 0)
+    return Status::Error(path + ": cannot make a scratch file in /tmp");
+  close(fd);
+  const std::string file = scratch + (IsStep(path) ? ".stp" : ".igs");
+  std::remove(scratch.c_str());
+  bool written = false;
+  if (IsStep(path)) {
+    STEPControl_Writer writer;
+    Interface_Static::SetCVal("write.step.unit", options.length_unit.c_str());
+    Interface_Static::SetCVal("write.step.schema", "AP214IS");
+    writer.Model()->SetWriteLengthUnit(options.length_unit == "INCH" ? 25.4
+                                                                     : 1.0);
+    if (writer.Transfer(shape, STEPControl_AsIs) == IFSelect_RetDone) {
+      APIHeaderSection_MakeHeader header(writer.Model());
+      header.SetTimeStamp(
+          new TCollection_HAsciiString(options.time_stamp.c_str()));
+      header.SetOriginatingSystem(
+          new TCollection_HAsciiString("tpopt (OpenCASCADE)"));
+      header.SetAuthorValue(1, new TCollection_HAsciiString("tpopt"));
+      written = writer.Write(file.c_str()) == IFSelect_RetDone;
+    }
+    Interface_Static::SetCVal("write.step.unit", "MM");
+  } else {
+    IGESControl_Controller::Init();
+    IGESControl_Writer writer(options.length_unit.c_str(), 0);
+    if (writer.AddShape(shape)) {
+      writer.ComputeModel();
+      // IGESControl_Writer::Write keeps 9 digits (1e-7 mm at 100 mm);
+      // 15 keep a face to 1e-13 mm.
+      IGESData_IGESWriter iges(writer.Model());
+      iges.FloatWriter().SetFormat("%.15E");
+      iges.SendModel(IGESSelect_WorkLibrary::DefineProtocol());
+      std::ofstream out(file, std::ios::binary);
+      written = iges.Print(out) && out.good();
+    }
+  }
+  std::string text;
+  Status s = written ? ReadText(file, &text)
+                     : Status::Error(path + ": OCCT could not write");
+  std::remove(file.c_str());
+  if (s.ok()) s = WriteFileAtomically(path, text);
+  return s;
+}
+
+}  // namespace
+
+bool IsCadSurfacePath(const std::string& path) {
+  const std::string ext = Extension(path);
+  return ext == "stp" || ext == "step" || ext == "igs" || ext == "iges";
+}
+
+bool CadIoAvailable() { return true; }
+
+bool CadReadOptions::IsValid(std::string* why) const {
+  if (face_index < -1) {
+    *why = "face index " + std::to_string(face_index) + " must be >= 0";
+    return false;
+  }
+  if (!ruling.empty() && ruling != "u" && ruling != "v") {
+    *why = "ruling '" + ruling + "' must be u or v";
+    return false;
+  }
+  if (!(max_ruled_deviation_mm >= 0.0) ||
+      !std::isfinite(max_ruled_deviation_mm)) {
+    *why = "max_ruled_deviation_mm " + std::to_string(max_ruled_deviation_mm) +
+           " must be finite and >= 0";
+    return false;
+  }
+  return true;
+}
+
+bool CadWriteOptions::IsValid(std::string* why) const {
+  if (length_unit != "MM" && length_unit != "INCH") {
+    *why = "length unit '" + length_unit + "' must be MM or INCH";
+    return false;
+  }
+  return true;
+}
+
+std::string CadFaceSummary::Describe() const {
+  std::string out = "face " + std::to_string(index) + ": " + surface_type;
+  if (degree_u > 0) {
+    out += ", degree " + std::to_string(degree_u) + " x " +
+           std::to_string(degree_v) + ", " + std::to_string(poles_u) + " x " +
+           std::to_string(poles_v) + " poles";
+    if (rational) out += ", rational";
+  }
+  return out;
+}
+
+Status ListCadFaces(const std::string& path,
+                    std::vector<CadFaceSummary>* faces) {
+  try {
+    LoadedFile loaded;
+    Status s = LoadFaces(path, &loaded);
+    if (!s.ok()) return s;
+    faces->clear();
+    for (size_t i = 0; i < loaded.faces.size(); ++i) {
+      bool trimmed = false;
+      faces->push_back(Summarize(static_cast<int>(i),
+                                 NaturalSurface(loaded.faces[i], &trimmed)));
+    }
+    return Status::Ok();
+  } catch (const Standard_Failure& failure) {
+    return Status::Error(path +
+                         ": OpenCASCADE failed: " + FailureText(failure));
+  }
+}
+
+Status ReadCadRuledSurface(const std::string& path,
+                           const CadReadOptions& options, RuledSurface* surface,
+                           CadSurfaceInfo* info) {
+  std::string why;
+  if (!options.IsValid(&why)) return Status::Error(path + ": " + why);
+  try {
+    LoadedFile loaded;
+    ChosenFace face;
+    Status s = LoadFaces(path, &loaded);
+    if (s.ok()) s = ChooseFace(path, loaded, options.face_index, &face);
+    if (!s.ok()) return s;
+    const std::string what =
+        path + ": face " + std::to_string(face.summary.index);
+    const Handle(Geom_BSplineSurface)& bs = face.bspline;
+    const std::string name =
+        Stem(path) + " face " + std::to_string(face.summary.index);
+    // The candidate rulings: the one asked for, else the exactly ruled
+    // direction (v first: a bilinear patch is ruled both ways), else both.
+    std::vector<bool> candidates;
+    if (!options.ruling.empty()) {
+      candidates = {options.ruling == "u"};
+    } else if (ExactlyRuled(bs, false)) {
+      candidates = {false};
+    } else if (ExactlyRuled(bs, true)) {
+      candidates = {true};
+    } else {
+      candidates = {false, true};
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (bool ruling_u : candidates) {
+      // N = r_u x r_v is S_u x S_v when the ruling is v, its opposite when u.
+      const double sign =
+          OutwardSign(face, options.flip_cutter_side) * (ruling_u ? -1.0 : 1.0);
+      RuledSurface ruled;
+      s = RailsOf(bs, ruling_u, what, name,
+                  sign > 0 ? CutterSide::kPositive : CutterSide::kNegative,
+                  &ruled);
+      if (!s.ok()) return s;
+      const bool exact = ExactlyRuled(bs, ruling_u);
+      const double deviation =
+          exact ? 0.0 : RuledDeviationMm(bs, ruling_u, ruled);
+      if (deviation < best) {
+        best = deviation;
+        *surface = ruled;
+        info->ruling = ruling_u ? "u" : "v";
+        info->exact_ruled = exact;
+        info->ruled_deviation_mm = deviation;
+      }
+    }
+    FillInfo(path, loaded, face, info);
+    if (best > options.max_ruled_deviation_mm) {
+      std::ostringstream err;
+      err << what << " is not ruled: it lies up to " << best
+          << " mm from the ruled surface between its boundary curves across "
+             "the ruling "
+          << info->ruling << ", above --max_ruled_deviation_mm="
+          << options.max_ruled_deviation_mm;
+      return Status::Error(err.str());
+    }
+    return Status::Ok();
+  } catch (const Standard_Failure& failure) {
+    return Status::Error(path +
+                         ": OpenCASCADE failed: " + FailureText(failure));
+  }
+}
+
+Status ReadCadBSplineSurface(const std::string& path,
+                             const CadReadOptions& options,
+                             BSplineSurface* surface, double* cutter_side_sign,
+                             CadSurfaceInfo* info) {
+  std::string why;
+  if (!options.IsValid(&why)) return Status::Error(path + ": " + why);
+  try {
+    LoadedFile loaded;
+    ChosenFace face;
+    Status s = LoadFaces(path, &loaded);
+    if (s.ok()) s = ChooseFace(path, loaded, options.face_index, &face);
+    if (!s.ok()) return s;
+    const std::string what =
+        path + ": face " + std::to_string(face.summary.index);
+    const Handle(Geom_BSplineSurface)& bs = face.bspline;
+    if (bs->UDegree() > BSplineSurface::kMaxDegree ||
+        bs->VDegree() > BSplineSurface::kMaxDegree) {
+      return Status::Error(what + ": degree " + std::to_string(bs->UDegree()) +
+                           " x " + std::to_string(bs->VDegree()) +
+                           " is above " +
+                           std::to_string(BSplineSurface::kMaxDegree));
+    }
+    s = BSplineSurface::Create(bs->UDegree(), bs->VDegree(),
+                               FlatKnots(bs, true), FlatKnots(bs, false),
+                               Net(bs, false), what, surface);
+    if (!s.ok()) return s;
+    *cutter_side_sign = OutwardSign(face, options.flip_cutter_side);
+    FillInfo(path, loaded, face, info);
+    info->ruling.clear();
+    return Status::Ok();
+  } catch (const Standard_Failure& failure) {
+    return Status::Error(path +
+                         ": OpenCASCADE failed: " + FailureText(failure));
+  }
+}
+
+Status WriteCadPatches(const std::string& path,
+                       const std::vector<CadPatch>& patches,
+                       const CadWriteOptions& options) {
+  std::string why;
+  if (!options.IsValid(&why)) return Status::Error(path + ": " + why);
+  if (!IsCadSurfacePath(path))
+    return Status::Error(path + ": not a .stp/.step/.igs/.iges name");
+  try {
+    SilenceOcct();
+    TopoDS_Shape shape;
+    if (patches.empty()) {
+      shape = BRepBuilderAPI_MakeVertex(gp_Pnt(0, 0, 0)).Vertex();
+    } else if (patches.size() == 1) {
+      TopoDS_Face face;
+      Status s = PatchFace(patches[0], 0, &face);
+      if (!s.ok()) return Status::Error(path + ": " + s.message());
+      shape = face;
+    } else {
+      TopoDS_Compound compound;
+      BRep_Builder builder;
+      builder.MakeCompound(compound);
+      for (size_t i = 0; i < patches.size(); ++i) {
+        TopoDS_Face face;
+        Status s = PatchFace(patches[i], static_cast<int>(i), &face);
+        if (!s.ok()) return Status::Error(path + ": " + s.message());
+        builder.Add(compound, face);
+      }
+      shape = compound;
+    }
+    return WriteShape(path, shape, options);
+  } catch (const Standard_Failure& failure) {
+    return Status::Error(path +
+                         ": OpenCASCADE failed: " + FailureText(failure));
+  }
+}
+
+Status WriteCadRuledSurface(const std::string& path,
+                            const RuledSurface& surface,
+                            const CadWriteOptions& options) {
+  std::string why;
+  if (!options.IsValid(&why)) return Status::Error(path + ": " + why);
+  try {
+    Handle(Geom_BSplineCurve) rails[2];
+    for (int r = 0; r < 2; ++r) {
+      const BSplineCurve& rail = surface.rail(r);
+      const int n = static_cast<int>(rail.control_points().size());
+      TColgp_Array1OfPnt poles(1, n);
+      for (int i = 0; i < n; ++i)
+        poles.SetValue(i + 1, ToGp(rail.control_points()[i]));
+      TColStd_Array1OfReal knots(1, 1);
+      TColStd_Array1OfInteger mults(1, 1);
+      ToOcctKnots(rail.knots(), &knots, &mults);
+      rails[r] = new Geom_BSplineCurve(poles, knots, mults, rail.degree());
+    }
+    GeomFill_BSplineCurves filler(rails[0], rails[1], GeomFill_StretchStyle);
+    Handle(Geom_BSplineSurface) bs = filler.Surface();
+    // Put the rails along u, rail 0 at v = 0 and u running as rail 0 does.
+    if (!ExactlyRuled(bs, false)) bs->ExchangeUV();
+    const Eigen::Vector3d c0 = ToEigen(rails[0]->Pole(1));
+    auto near = [&](int i, int j) {
+      return (ToEigen(bs->Pole(i, j)) - c0).norm() < kPoleTolMm;
+    };
+    if (!near(1, 1) && near(1, bs->NbVPoles())) bs->VReverse();
+    if (!near(1, 1) && near(bs->NbUPoles(), 1)) bs->UReverse();
+    if (!near(1, 1) || !ExactlyRuled(bs, false)) {
+      return Status::Error(path +
+                           ": OCCT's ruled surface between the rails of " +
+                           surface.name() + " does not start at rail 0");
+    }
+    BRepBuilderAPI_MakeFace make(bs, 1e-7);
+    if (!make.IsDone())
+      return Status::Error(path + ": OCCT could not make a face");
+    TopoDS_Face face = make.Face();
+    if (surface.cutter_side() == CutterSide::kNegative) face.Reverse();
+    SilenceOcct();
+    return WriteShape(path, face, options);
+  } catch (const Standard_Failure& failure) {
+    return Status::Error(path +
+                         ": OpenCASCADE failed: " + FailureText(failure));
+  }
+}
+
+}  // namespace tpopt

@@ -1,0 +1,423 @@
+#include "model/cad_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "model/json_io.h"
+#include "tests/test_util.h"
+
+namespace tpopt {
+namespace {
+
+using testing::SourcePath;
+using testing::TempDir;
+
+constexpr double kTolMm = 1e-9;
+constexpr int kGrid = 21;
+
+// Largest |a(u, v) - b(u, v)| over a kGrid x kGrid grid of the unit square.
+template <typename A, typename B>
+double MaxGridGapMm(const A& a, const B& b) {
+  double worst = 0.0;
+  for (int i = 0; i < kGrid; ++i) {
+    for (int j = 0; j < kGrid; ++j) {
+      const double u = i / (kGrid - 1.0), v = j / (kGrid - 1.0);
+      worst = std::max(worst, (a.Point(u, v) - b.Point(u, v)).norm());
+    }
+  }
+  return worst;
+}
+
+// Two cubic rails on shared knots and the ruled patch (degree 3 x 1)
+// between them, poles[i][0] on rail 0.
+struct Rails {
+  std::vector<double> knots = {0, 0, 0, 0, 0.3, 0.55, 1, 1, 1, 1};
+  std::vector<Eigen::Vector3d> c0, c1;
+  Rails() {
+    for (int i = 0; i < 6; ++i) {
+      c0.emplace_back(12.0 * i, 3.0 * std::sin(i), 0.5 * i * i);
+      c1.emplace_back(12.0 * i + 4.0 * std::cos(i), 5.0 + i, 40.0 - 0.3 * i);
+    }
+  }
+  CadPatch Patch() const {
+    CadPatch p;
+    p.degree_u = 3;
+    p.degree_v = 1;
+    p.knots_u = knots;
+    p.knots_v = {0, 0, 1, 1};
+    for (size_t i = 0; i < c0.size(); ++i) p.poles.push_back({c0[i], c1[i]});
+    return p;
+  }
+  RuledSurface Surface(CutterSide side = CutterSide::kPositive) const {
+    BSplineCurve r0, r1;
+    EXPECT_TRUE(BSplineCurve::Create(3, knots, c0, "rail 0", &r0).ok());
+    EXPECT_TRUE(BSplineCurve::Create(3, knots, c1, "rail 1", &r1).ok());
+    return RuledSurface("rails", r0, r1, side);
+  }
+};
+
+CadPatch Transpose(const CadPatch& p) {
+  CadPatch t = p;
+  std::swap(t.degree_u, t.degree_v);
+  std::swap(t.knots_u, t.knots_v);
+  t.poles.assign(p.poles[0].size(),
+                 std::vector<Eigen::Vector3d>(p.poles.size()));
+  for (size_t i = 0; i < p.poles.size(); ++i) {
+    for (size_t j = 0; j < p.poles[0].size(); ++j)
+      t.poles[j][i] = p.poles[i][j];
+  }
+  return t;
+}
+
+class CadIoTest : public ::testing::Test {
+ protected:
+  std::string Write(const std::string& name,
+                    const std::vector<CadPatch>& patches,
+                    const std::string& unit = "MM") {
+    CadWriteOptions options;
+    options.length_unit = unit;
+    const std::string path = dir_.File(name);
+    const Status s = WriteCadPatches(path, patches, options);
+    EXPECT_TRUE(s.ok()) << s.message();
+    return path;
+  }
+  std::string ReadError(const std::string& path,
+                        const CadReadOptions& options = {}) {
+    RuledSurface surface;
+    CadSurfaceInfo info;
+    const Status s = ReadCadRuledSurface(path, options, &surface, &info);
+    return s.ok() ? "" : s.message();
+  }
+  TempDir dir_;
+};
+
+TEST_F(CadIoTest, RuledPatchBetweenTwoRailsReadsBackExactlyInStepAndIges) {
+  const Rails rails;
+  for (const std::string name : {"ruled.stp", "ruled.igs"}) {
+    const std::string path = Write(name, {rails.Patch()});
+    RuledSurface surface;
+    CadSurfaceInfo info;
+    const Status s = ReadCadRuledSurface(path, {}, &surface, &info);
+    ASSERT_TRUE(s.ok()) << s.message();
+    EXPECT_LT(MaxGridGapMm(surface, rails.Surface()), kTolMm) << name;
+    EXPECT_EQ(info.ruling, "v") << name;
+    EXPECT_TRUE(info.exact_ruled) << name;
+    EXPECT_EQ(info.ruled_deviation_mm, 0.0) << name;
+    EXPECT_EQ(info.face_count, 1) << name;
+    EXPECT_EQ(info.face.Describe(),
+              "face 0: Geom_BSplineSurface, degree 3 x 1, 6 x 2 poles")
+        << name;
+    // A FORWARD face: the cutter on S_u x S_v, which is r_u x r_v here.
+    EXPECT_EQ(surface.cutter_side(), CutterSide::kPositive) << name;
+  }
+}
+
+TEST_F(CadIoTest, RulingAlongUIsDetectedAndTheCutterSideFollowsTheNormal) {
+  const Rails rails;
+  CadPatch patch = Transpose(rails.Patch());
+  RuledSurface surface;
+  CadSurfaceInfo info;
+  ASSERT_TRUE(
+      ReadCadRuledSurface(Write("u.stp", {patch}), {}, &surface, &info).ok());
+  EXPECT_EQ(info.ruling, "u");
+  EXPECT_LT(MaxGridGapMm(surface, rails.Surface()), kTolMm);
+  // r_u x r_v = S_v x S_u = -(the face normal): the cutter on the negative
+  // side.
+  EXPECT_EQ(surface.cutter_side(), CutterSide::kNegative);
+  patch.reversed = true;
+  ASSERT_TRUE(
+      ReadCadRuledSurface(Write("r.stp", {patch}), {}, &surface, &info).ok());
+  EXPECT_TRUE(info.face_reversed);
+  EXPECT_EQ(surface.cutter_side(), CutterSide::kPositive);
+  CadReadOptions flip;
+  flip.flip_cutter_side = true;
+  ASSERT_TRUE(
+      ReadCadRuledSurface(dir_.File("r.stp"), flip, &surface, &info).ok());
+  EXPECT_EQ(surface.cutter_side(), CutterSide::kNegative);
+  // Asking for the other ruling: the boundary curves along v are the two
+  // straight edges, far from this twisted face.
+  CadReadOptions v;
+  v.ruling = "v";
+  EXPECT_NE(ReadError(dir_.File("u.stp"), v).find("is not ruled"),
+            std::string::npos);
+}
+
+TEST_F(CadIoTest, BezierRuledFaceIsExact) {
+  const Rails rails;
+  CadPatch patch;
+  patch.bezier = true;
+  std::vector<double> knots = {0, 0, 0, 0, 1, 1, 1, 1};
+  std::vector<Eigen::Vector3d> c0(rails.c0.begin(), rails.c0.begin() + 4);
+  std::vector<Eigen::Vector3d> c1(rails.c1.begin(), rails.c1.begin() + 4);
+  for (int i = 0; i < 4; ++i) patch.poles.push_back({c0[i], c1[i]});
+  BSplineCurve r0, r1;
+  ASSERT_TRUE(BSplineCurve::Create(3, knots, c0, "0", &r0).ok());
+  ASSERT_TRUE(BSplineCurve::Create(3, knots, c1, "1", &r1).ok());
+  RuledSurface surface;
+  CadSurfaceInfo info;
+  const Status s =
+      ReadCadRuledSurface(Write("bezier.stp", {patch}), {}, &surface, &info);
+  ASSERT_TRUE(s.ok()) << s.message();
+  // OCCT writes a Bezier face as a B_SPLINE_SURFACE_WITH_KNOTS; read, it
+  // is the same surface.
+  EXPECT_TRUE(info.exact_ruled);
+  EXPECT_LT(
+      MaxGridGapMm(surface, RuledSurface("b", r0, r1, CutterSide::kPositive)),
+      kTolMm);
+}
+
+TEST_F(CadIoTest, RationalFacesAreRefusedByNameUnlessTheWeightsAreEqual) {
+  const Rails rails;
+  CadPatch patch = rails.Patch();
+  patch.weights.assign(patch.poles.size(), {1.0, 1.0});
+  patch.weights[2] = {0.5, 0.5};
+  for (const std::string name : {"rational.stp", "rational.igs"}) {
+    const std::string error = ReadError(Write(name, {patch}));
+    EXPECT_NE(
+        error.find(
+            name +
+            ": face 0: a rational Geom_BSplineSurface (weights 0.5 to 1)"),
+        std::string::npos)
+        << error;
+  }
+  // Equal weights are no rational surface: OCCT drops them, the face is exact.
+  patch.weights.assign(patch.poles.size(), {2.0, 2.0});
+  RuledSurface surface;
+  CadSurfaceInfo info;
+  ASSERT_TRUE(
+      ReadCadRuledSurface(Write("equal.stp", {patch}), {}, &surface, &info)
+          .ok());
+  EXPECT_LT(MaxGridGapMm(surface, rails.Surface()), kTolMm);
+}
+
+// A bicubic face over the plane z = 0 whose two inner rows along v are
+// lifted by h: z = h (B1(v) + B2(v)) = 3 h v (1 - v), straight along u.
+CadPatch LiftedBicubic(double h) {
+  CadPatch p;
+  p.degree_u = 3;
+  p.degree_v = 3;
+  p.knots_u = {0, 0, 0, 0, 0.5, 1, 1, 1, 1};
+  p.knots_v = {0, 0, 0, 0, 1, 1, 1, 1};
+  for (int i = 0; i < 5; ++i) {
+    p.poles.emplace_back();
+    for (int j = 0; j < 4; ++j) {
+      p.poles.back().emplace_back(10.0 * i, 10.0 * j,
+                                  (j == 1 || j == 2) ? h : 0.0);
+    }
+  }
+  return p;
+}
+
+TEST_F(CadIoTest, BicubicFaceGivesItsRuledDistanceAndIsRefusedAboveTheLimit) {
+  const double h = 0.4;
+  const std::string path = Write("bicubic.stp", {LiftedBicubic(h)});
+  // Across v its boundary rails bound the plane z = 0; the face is at most
+  // 3 h / 4 above it (v = 1/2, on the grid).
+  CadReadOptions options;
+  options.ruling = "v";
+  options.max_ruled_deviation_mm = 1.0;
+  RuledSurface surface;
+  CadSurfaceInfo info;
+  ASSERT_TRUE(ReadCadRuledSurface(path, options, &surface, &info).ok());
+  EXPECT_FALSE(info.exact_ruled);
+  EXPECT_NEAR(info.ruled_deviation_mm, 0.75 * h, 1e-9);
+  EXPECT_EQ(surface.Point(0.3, 0.5).z(), 0.0);
+  options.max_ruled_deviation_mm = 0.2;
+  const std::string error = ReadError(path, options);
+  EXPECT_NE(
+      error.find("bicubic.stp: face 0 is not ruled: it lies up to 0.3 mm"),
+      std::string::npos)
+      << error;
+  // Detected: along u the face is straight, so u is the ruling, exactly in
+  // distance though not in degree.
+  ASSERT_TRUE(ReadCadRuledSurface(path, {}, &surface, &info).ok());
+  EXPECT_EQ(info.ruling, "u");
+  EXPECT_FALSE(info.exact_ruled);
+  EXPECT_LT(info.ruled_deviation_mm, 1e-9);
+}
+
+TEST_F(CadIoTest, BicubicFreeformSurfaceReadsBackExactly) {
+  BSplineSurface json;
+  ASSERT_TRUE(
+      ReadBSplineSurfaceJson(
+          SourcePath("data/surfaces/propeller_blade_freeform.json"), &json)
+          .ok());
+  CadPatch patch;
+  patch.degree_u = json.degree_u();
+  patch.degree_v = json.degree_v();
+  patch.knots_u = json.knots_u();
+  patch.knots_v = json.knots_v();
+  for (int i = 0; i < json.rows(); ++i) {
+    patch.poles.emplace_back();
+    for (int j = 0; j < json.cols(); ++j)
+      patch.poles.back().push_back(json.control_point(i, j));
+  }
+  for (const std::string name : {"blade.step", "blade.iges"}) {
+    BSplineSurface read;
+    CadSurfaceInfo info;
+    double side = 0.0;
+    const Status s =
+        ReadCadBSplineSurface(Write(name, {patch}), {}, &read, &side, &info);
+    ASSERT_TRUE(s.ok()) << s.message();
+    EXPECT_LT(MaxGridGapMm(read, json), kTolMm) << name;
+    EXPECT_EQ(side, 1.0) << name;
+  }
+}
+
+TEST_F(CadIoTest, InchFilesComeBackInMm) {
+  const Rails rails;
+  for (const std::string name : {"inch.stp", "inch.igs"}) {
+    const std::string path = Write(name, {rails.Patch()}, "INCH");
+    // The file holds inches: rail 0's last pole x = 60 mm = 2.36220472440945
+    // in.
+    EXPECT_NE(testing::ReadFileText(path).find("2.362204724409"),
+              std::string::npos)
+        << name;
+    RuledSurface surface;
+    CadSurfaceInfo info;
+    ASSERT_TRUE(ReadCadRuledSurface(path, {}, &surface, &info).ok());
+    EXPECT_LT(MaxGridGapMm(surface, rails.Surface()), kTolMm) << name;
+    EXPECT_NE(info.length_unit.find("IN"), std::string::npos)
+        << name << ": " << info.length_unit;
+  }
+}
+
+TEST_F(CadIoTest, SeveralFacesAreListedAndChosenByIndex) {
+  const Rails rails;
+  CadPatch plane = rails.Patch();
+  plane.as_plane = true;
+  const std::string path =
+      Write("three.stp", {LiftedBicubic(1.0), rails.Patch(), plane});
+  std::string error = ReadError(path);
+  EXPECT_NE(error.find(
+                "three.stp: the file holds 3 faces; choose one with --face=N:\n"
+                "  face 0: Geom_BSplineSurface, degree 3 x 3, 5 x 4 poles\n"
+                "  face 1: Geom_BSplineSurface, degree 3 x 1, 6 x 2 poles\n"
+                "  face 2: Geom_Plane"),
+            std::string::npos)
+      << error;
+  CadReadOptions options;
+  options.face_index = 1;
+  RuledSurface surface;
+  CadSurfaceInfo info;
+  ASSERT_TRUE(ReadCadRuledSurface(path, options, &surface, &info).ok());
+  EXPECT_LT(MaxGridGapMm(surface, rails.Surface()), kTolMm);
+  EXPECT_EQ(info.face_count, 3);
+  options.face_index = 2;
+  error = ReadError(path, options);
+  EXPECT_NE(error.find("three.stp: face 2 is a Geom_Plane, not a B-spline or "
+                       "Bezier surface"),
+            std::string::npos)
+      << error;
+  options.face_index = 3;
+  error = ReadError(path, options);
+  EXPECT_NE(
+      error.find("three.stp: face 3 does not exist; the file holds 3 faces:"),
+      std::string::npos)
+      << error;
+  std::vector<CadFaceSummary> faces;
+  ASSERT_TRUE(ListCadFaces(path, &faces).ok());
+  ASSERT_EQ(faces.size(), 3u);
+  EXPECT_EQ(faces[1].poles_u, 6);
+}
+
+TEST_F(CadIoTest, TrimmedFaceUsesTheNaturalBoundsAndSaysSo) {
+  const Rails rails;
+  CadPatch patch = rails.Patch();
+  patch.trim_u = 0.6;
+  RuledSurface surface;
+  CadSurfaceInfo info;
+  ASSERT_TRUE(
+      ReadCadRuledSurface(Write("trim.stp", {patch}), {}, &surface, &info)
+          .ok());
+  EXPECT_TRUE(info.trimmed);
+  EXPECT_LT(MaxGridGapMm(surface, rails.Surface()), kTolMm);
+  ASSERT_TRUE(ReadCadRuledSurface(Write("whole.stp", {rails.Patch()}), {},
+                                  &surface, &info)
+                  .ok());
+  EXPECT_FALSE(info.trimmed);
+}
+
+TEST_F(CadIoTest, BadFilesNameTheFile) {
+  const Rails rails;
+  const std::string good = Write("good.stp", {rails.Patch()});
+  const std::string text = testing::ReadFileText(good);
+  const std::string igs =
+      testing::ReadFileText(Write("good.igs", {rails.Patch()}));
+  std::ofstream(dir_.File("empty.stp")) << "";
+  std::ofstream(dir_.File("half.stp")) << text.substr(0, text.size() / 2);
+  std::ofstream(dir_.File("half.igs")) << igs.substr(0, igs.size() / 2);
+  std::ofstream(dir_.File("junk.step"))
+      << "ISO-10303-21;\nthis is no STEP\nEND-ISO-10303-21;\n";
+  Write("vertex.stp", {});
+  const std::pair<std::string, std::string> rows[] = {
+      {"empty.stp", "empty.stp: the file is empty"},
+      {"half.stp", "half.stp: truncated STEP file"},
+      {"half.igs", "half.igs: truncated IGES file"},
+      {"junk.step", "junk.step: "},
+      {"vertex.stp", "vertex.stp: the file holds no surface"},
+      {"missing.stp", "missing.stp: cannot open"},
+  };
+  for (const auto& [name, expected] : rows) {
+    const std::string error = ReadError(dir_.File(name));
+    EXPECT_NE(error.find(expected), std::string::npos) << name << ": " << error;
+  }
+  CadReadOptions bad;
+  bad.ruling = "w";
+  EXPECT_NE(ReadError(good, bad).find("ruling 'w' must be u or v"),
+            std::string::npos);
+}
+
+TEST_F(CadIoTest, SharedRuledSurfacesRoundTripThroughTheirWriter) {
+  for (const std::string name : {"hypar", "impeller_blade", "jcde2022"}) {
+    RuledSurface json;
+    ASSERT_TRUE(
+        ReadSurfaceJson(SourcePath("data/surfaces/" + name + ".json"), &json)
+            .ok());
+    for (const std::string ext : {".stp", ".igs"}) {
+      const std::string path = dir_.File(name + ext);
+      ASSERT_TRUE(WriteCadRuledSurface(path, json, {}).ok()) << name;
+      RuledSurface read;
+      CadSurfaceInfo info;
+      const Status s = ReadCadRuledSurface(path, {}, &read, &info);
+      ASSERT_TRUE(s.ok()) << s.message();
+      EXPECT_TRUE(info.exact_ruled) << name << ext;
+      EXPECT_LT(MaxGridGapMm(read, json), kTolMm) << name << ext;
+      EXPECT_EQ(read.cutter_side(), json.cutter_side()) << name << ext;
+    }
+  }
+}
+
+// The checked-in STEP versions of the shared surfaces (written by
+// tpopt_write_step_surfaces) still match their JSON.
+TEST_F(CadIoTest, CheckedInStepSurfacesMatchTheirJson) {
+  for (const std::string name : {"hypar", "impeller_blade", "jcde2022"}) {
+    RuledSurface json, step;
+    CadSurfaceInfo info;
+    ASSERT_TRUE(
+        ReadSurfaceJson(SourcePath("data/surfaces/" + name + ".json"), &json)
+            .ok());
+    const Status s = ReadCadRuledSurface(
+        SourcePath("data/surfaces/" + name + ".stp"), {}, &step, &info);
+    ASSERT_TRUE(s.ok()) << s.message();
+    EXPECT_LT(MaxGridGapMm(step, json), kTolMm) << name;
+    EXPECT_EQ(step.cutter_side(), json.cutter_side()) << name;
+  }
+  BSplineSurface json, step;
+  ASSERT_TRUE(
+      ReadBSplineSurfaceJson(
+          SourcePath("data/surfaces/propeller_blade_freeform.json"), &json)
+          .ok());
+  double side = 0.0;
+  CadSurfaceInfo info;
+  const Status s = ReadCadBSplineSurface(
+      SourcePath("data/surfaces/propeller_blade_freeform.stp"), {}, &step,
+      &side, &info);
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_LT(MaxGridGapMm(step, json), kTolMm);
+}
+
+}  // namespace
+}  // namespace tpopt
