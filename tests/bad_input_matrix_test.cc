@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "model/cad_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -92,6 +93,55 @@ TEST_F(BadInputMatrixTest, ErrorsExitOneNamingTheFileAndPlaceWithNoOutput) {
     EXPECT_NE(r.output.find(row.expected), std::string::npos) << row.name << ": " << r.output;
     EXPECT_FALSE(FileExists(dir_.File("out.cls"))) << row.name;
   }
+}
+
+// STEP and IGES surfaces: exit 1 naming the file (and the face), nothing
+// written.
+TEST_F(BadInputMatrixTest, CadSurfaceErrorsExitOneNamingTheFileAndFace) {
+  if (!CadIoAvailable()) GTEST_SKIP() << "built without OpenCASCADE";
+  CadPatch ruled;
+  ruled.knots_u = {0, 0, 0, 0, 1, 1, 1, 1};
+  ruled.knots_v = {0, 0, 1, 1};
+  for (int i = 0; i < 4; ++i) {
+    ruled.poles.push_back({Eigen::Vector3d(10.0 * i, 0, 0), Eigen::Vector3d(10.0 * i, 5.0 + i * i, 30)});
+  }
+  CadPatch plane = ruled;
+  plane.as_plane = true;
+  const std::string good = dir_.File("good.stp"), two = dir_.File("two.stp");
+  ASSERT_TRUE(WriteCadPatches(good, {ruled}, {}).ok());
+  ASSERT_TRUE(WriteCadPatches(two, {ruled, plane}, {}).ok());
+  ASSERT_TRUE(WriteCadPatches(dir_.File("none.stp"), {}, {}).ok());
+  ASSERT_TRUE(WriteCadPatches(dir_.File("plane.igs"), {plane}, {}).ok());
+  const std::string text = testing::ReadFileText(good);
+  Write("cut.stp", text.substr(0, text.size() / 2));
+  Write("empty.step", "");
+  const std::string path = Write("p.cls", "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\n");
+  const Row rows[] = {
+      {"cut.stp", "", "--surface=" + dir_.File("cut.stp"), "cut.stp: truncated STEP file"},
+      {"empty.step", "", "--surface=" + dir_.File("empty.step"), "empty.step: the file is empty"},
+      {"none.stp", "", "--surface=" + dir_.File("none.stp"),
+       "none.stp: the file holds no surface"},
+      {"two.stp", "", "--surface=" + two, "two.stp: the file holds 2 faces; choose one"},
+      {"two.stp", "", "--surface=" + two + " --face=2", "two.stp: face 2 does not exist"},
+      {"two.stp", "", "--surface=" + two + " --face=1",
+       "two.stp: face 1 is a Geom_Plane, not a B-spline"},
+      {"plane.igs", "", "--surface=" + dir_.File("plane.igs"),
+       "plane.igs: face 0 is a Geom_Plane"},
+      {"good.stp", "", "--surface=" + good + " --ruling=u --max_ruled_deviation_mm=0.001",
+       "good.stp: face 0 is not ruled"},
+  };
+  for (const Row& row : rows) {
+    const auto r = Smooth(path, row.args);
+    EXPECT_EQ(r.exit_code, 1) << row.args << ": " << r.output;
+    EXPECT_NE(r.output.find(row.expected), std::string::npos) << row.args << ": " << r.output;
+    EXPECT_FALSE(FileExists(dir_.File("out.cls"))) << row.args;
+    EXPECT_FALSE(FileExists(dir_.File("r.json"))) << row.args;
+  }
+  // A bad --ruling is a usage error of the flags, but reaches the reader as
+  // bad input naming the file.
+  const auto r = Smooth(path, "--surface=" + good + " --ruling=w");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("good.stp: ruling 'w' must be u or v"), std::string::npos) << r.output;
 }
 
 TEST_F(BadInputMatrixTest, UnwritableOutputsExitOneAndLeaveNothing) {

@@ -2,8 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "model/json_io.h"
 #include "tests/test_util.h"
@@ -11,8 +13,10 @@
 namespace tpopt {
 namespace {
 
+using testing::RunCommand;
 using testing::SourcePath;
 using testing::TempDir;
+using testing::Tpopt;
 
 constexpr double kTolMm = 1e-9;
 constexpr int kGrid = 21;
@@ -417,6 +421,146 @@ TEST_F(CadIoTest, CheckedInStepSurfacesMatchTheirJson) {
       &side, &info);
   ASSERT_TRUE(s.ok()) << s.message();
   EXPECT_LT(MaxGridGapMm(step, json), kTolMm);
+}
+
+// A path file without its comment lines ($$ ...), which name the surface.
+std::string Moves(const std::string& path) {
+  std::istringstream in(testing::ReadFileText(path));
+  std::string line, out;
+  while (std::getline(in, line)) {
+    if (line.rfind("$$", 0) != 0) out += line + "\n";
+  }
+  return out;
+}
+
+// Every number of `a` within 1e-9 (relative above 1) of `b`'s, every other
+// value equal, keys in `skip` ignored; `where` names the first difference.
+bool SameReport(const nlohmann::json& a, const nlohmann::json& b,
+                const std::vector<std::string>& skip, std::string* where) {
+  if (a.is_object() && b.is_object()) {
+    for (const auto& [key, value] : a.items()) {
+      if (std::find(skip.begin(), skip.end(), key) != skip.end()) continue;
+      if (!b.contains(key)) {
+        *where = key + " missing";
+        return false;
+      }
+      if (!SameReport(value, b[key], skip, where)) {
+        *where = key + "." + *where;
+        return false;
+      }
+    }
+    return a.size() == b.size() || (*where = "key count", false);
+  }
+  if (a.is_number() && b.is_number()) {
+    const double x = a.get<double>(), y = b.get<double>();
+    if (std::abs(x - y) <= 1e-9 * std::max(1.0, std::abs(x))) return true;
+    *where = std::to_string(x) + " vs " + std::to_string(y);
+    return false;
+  }
+  if (a.is_array() && b.is_array() && a.size() == b.size()) {
+    for (size_t i = 0; i < a.size(); ++i) {
+      if (!SameReport(a[i], b[i], skip, where)) {
+        *where = "[" + std::to_string(i) + "]" + *where;
+        return false;
+      }
+    }
+    return true;
+  }
+  if (a == b) return true;
+  *where = a.dump() + " vs " + b.dump();
+  return false;
+}
+
+TEST(CadSurfaceCliTest, EvaluateGivesTheSameReportFromStepAndJson) {
+  TempDir dir;
+  const std::string json = SourcePath("data/surfaces/impeller_blade.json");
+  const std::string step = SourcePath("data/surfaces/impeller_blade.stp");
+  const std::string machine =
+      SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+  const std::string from_json = dir.File("j.cls"),
+                    from_step = dir.File("s.cls");
+  for (const auto& [surface, out] :
+       {std::pair{json, from_json}, {step, from_step}}) {
+    const auto r =
+        RunCommand(Tpopt("generate --quiet --cutter_radius=4 --poses=120 "
+                         "--uv_distortion=0.03 --surface=" +
+                         surface + " --out=" + out));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  // The same path from either file, to the 6 decimals APT keeps.
+  const std::string moves = Moves(from_json);
+  EXPECT_GT(moves.size(), 1000u);
+  EXPECT_TRUE(moves == Moves(from_step));
+  for (const auto& [surface, report] :
+       {std::pair{json, dir.File("j.json")}, {step, dir.File("s.json")}}) {
+    const auto r = RunCommand(
+        Tpopt("evaluate --quiet --in=" + from_json + " --machine=" + machine +
+              " --surface=" + surface + " --report=" + report));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  const nlohmann::json j = testing::ReadJson(dir.File("j.json"));
+  nlohmann::json s = testing::ReadJson(dir.File("s.json"));
+  ASSERT_TRUE(s.contains("surface_cad"));
+  EXPECT_EQ(s["surface_cad"]["ruling"], "v");
+  EXPECT_EQ(s["surface_cad"]["exact_ruled"], true);
+  EXPECT_EQ(s["surface_cad"]["trimmed"], false);
+  EXPECT_EQ(s["surface_cad"]["length_unit"], "millimetre");
+  s.erase("surface_cad");
+  std::string where;
+  EXPECT_TRUE(SameReport(j, s, {"surface", "command"}, &where)) << where;
+  EXPECT_GT(j["max_overcut_mm"].get<double>(), 0.0);
+}
+
+TEST(CadSurfaceCliTest, StripwidthAndPencilReadStepFaces) {
+  TempDir dir;
+  const std::string machine = SourcePath("data/machines/jcde2022_ac.json");
+  for (const std::string ext : {"json", "stp"}) {
+    const auto r = RunCommand(
+        Tpopt("stripwidth --quiet --method=mpec --cutter=torus:8,2 "
+              "--tolerance_mm=0.01 "
+              "--cc_points=6 --surface=" +
+              SourcePath("data/surfaces/propeller_blade_freeform." + ext) +
+              " --machine=" + machine + " --out=" + dir.File(ext + ".cls") +
+              " --report=" + dir.File(ext + ".json")));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  std::string where;
+  nlohmann::json step = testing::ReadJson(dir.File("stp.json"));
+  EXPECT_EQ(step["surface_cad"]["face"], 0);
+  step.erase("surface_cad");
+  EXPECT_TRUE(SameReport(testing::ReadJson(dir.File("json.json")), step,
+                         {"surface", "command", "solve_time_s", "title"},
+                         &where))
+      << where;
+
+  // The pencil surface as a STEP face; the same report as from its JSON.
+  BSplineSurface json;
+  const std::string pencil_json =
+      SourcePath("data/pencil/surface_120x120x55.json");
+  ASSERT_TRUE(ReadBSplineSurfaceJson(pencil_json, &json).ok());
+  CadPatch patch;
+  patch.degree_u = json.degree_u();
+  patch.degree_v = json.degree_v();
+  patch.knots_u = json.knots_u();
+  patch.knots_v = json.knots_v();
+  for (int i = 0; i < json.rows(); ++i) {
+    patch.poles.emplace_back();
+    for (int j = 0; j < json.cols(); ++j) {
+      patch.poles.back().push_back(json.control_point(i, j));
+    }
+  }
+  ASSERT_TRUE(WriteCadPatches(dir.File("pencil.stp"), {patch}, {}).ok());
+  for (const std::string& surface : {pencil_json, dir.File("pencil.stp")}) {
+    const std::string name = surface == pencil_json ? "pj" : "ps";
+    const auto r = RunCommand(Tpopt(
+        "pencil --quiet --ball_radius=1.5 --feed=3000 --surface=" + surface +
+        " --curve=" + SourcePath("data/pencil/flower_guides.json") + " --out=" +
+        dir.File(name + ".cls") + " --report=" + dir.File(name + ".json")));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  const std::string moves = Moves(dir.File("pj.cls"));
+  EXPECT_GT(moves.size(), 1000u);
+  EXPECT_TRUE(moves == Moves(dir.File("ps.cls")));
 }
 
 }  // namespace
