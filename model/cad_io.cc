@@ -14,6 +14,7 @@
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_BezierSurface.hxx>
 #include <Geom_RectangularTrimmedSurface.hxx>
+#include <Geom_SurfaceOfLinearExtrusion.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Reader.hxx>
@@ -283,13 +284,30 @@ Status ChooseFace(const std::string& path, const LoadedFile& loaded,
   Handle(Geom_BSplineSurface) bs =
       Handle(Geom_BSplineSurface)::DownCast(surface);
   Handle(Geom_BezierSurface) bz = Handle(Geom_BezierSurface)::DownCast(surface);
-  if (!bz.IsNull()) {
+  Handle(Geom_SurfaceOfLinearExtrusion) extrusion =
+      Handle(Geom_SurfaceOfLinearExtrusion)::DownCast(surface);
+  if (!extrusion.IsNull()) {
+    // Unbounded along its direction: the face's extent there, the curve's
+    // natural range along it; an exact B-spline (rational when the curve is).
+    double u0, u1, v0, v1, fu0, fu1, fv0, fv1;
+    extrusion->Bounds(u0, u1, v0, v1);
+    BRepTools::UVBounds(loaded.faces[index], fu0, fu1, fv0, fv1);
+    bs = GeomConvert::SurfaceToBSplineSurface(
+        new Geom_RectangularTrimmedSurface(extrusion, u0, u1, fv0, fv1));
+    const CadFaceSummary converted = Summarize(index, bs);
+    chosen->summary.degree_u = converted.degree_u;
+    chosen->summary.degree_v = converted.degree_v;
+    chosen->summary.poles_u = converted.poles_u;
+    chosen->summary.poles_v = converted.poles_v;
+    chosen->summary.rational = converted.rational;
+  } else if (!bz.IsNull()) {
     bs = GeomConvert::SurfaceToBSplineSurface(bz);
   } else if (!bs.IsNull()) {
     bs = Handle(Geom_BSplineSurface)::DownCast(bs->Copy());
   } else {
-    return Status::Error(what + " is a " + chosen->summary.surface_type +
-                         ", not a B-spline or Bezier surface");
+    return Status::Error(
+        what + " is a " + chosen->summary.surface_type +
+        ", not a B-spline, Bezier or linear extrusion surface");
   }
   if (chosen->summary.rational) {
     double w_min = std::numeric_limits<double>::infinity(), w_max = -w_min;
@@ -482,6 +500,27 @@ Status PatchFace(const CadPatch& patch, int index, TopoDS_Face* face) {
     BRepBuilderAPI_MakeFace make(plane, 0.0, du.norm(), 0.0, dv.norm());
     if (!make.IsDone())
       return Status::Error(what + ": OCCT could not make the plane face");
+    *face = make.Face();
+    if (patch.reversed) face->Reverse();
+    return Status::Ok();
+  }
+  if (patch.extrusion_mm.norm() > 0.0) {
+    const int n = nu;
+    TColgp_Array1OfPnt curve_poles(1, n);
+    for (int i = 0; i < n; ++i)
+      curve_poles.SetValue(i + 1, ToGp(patch.poles[i][0]));
+    TColStd_Array1OfReal knots(1, 1);
+    TColStd_Array1OfInteger mults(1, 1);
+    ToOcctKnots(patch.knots_u, &knots, &mults);
+    Handle(Geom_BSplineCurve) curve =
+        new Geom_BSplineCurve(curve_poles, knots, mults, patch.degree_u);
+    const Eigen::Vector3d& d = patch.extrusion_mm;
+    surface =
+        new Geom_SurfaceOfLinearExtrusion(curve, gp_Dir(d.x(), d.y(), d.z()));
+    BRepBuilderAPI_MakeFace make(surface, curve->FirstParameter(),
+                                 curve->LastParameter(), 0.0, d.norm(), 1e-7);
+    if (!make.IsDone())
+      return Status::Error(what + ": OCCT could not make a face");
     *face = make.Face();
     if (patch.reversed) face->Reverse();
     return Status::Ok();

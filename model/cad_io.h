@@ -80,8 +80,9 @@ Status ListCadFaces(const std::string& path,
 
 // Reads one face as a RuledSurface r(u, v) = (1 - v) C1(u) + v C2(u): rail 0
 // is the boundary at the start of the ruling parameter, rail 1 at its end.
-// A B-spline or Bezier face of degree 1 with two poles along the ruling is
-// taken exactly; any other B-spline face through its boundary curves, within
+// A B-spline or Bezier face of degree 1 with two poles along the ruling, or
+// a linear extrusion (over the face's extent) of a B-spline, is taken
+// exactly; any other B-spline face through its boundary curves, within
 // options.max_ruled_deviation_mm. Rational faces are refused by name (the
 // rails are non-rational B-splines). Errors name the file and the face.
 Status ReadCadRuledSurface(const std::string& path,
@@ -111,6 +112,10 @@ struct CadPatch {
   bool bezier = false;
   bool as_plane = false;
   bool reversed = false;  // write the face REVERSED
+  // Non-zero: write instead the linear extrusion (OCCT's
+  // Geom_SurfaceOfLinearExtrusion) of the curve through poles[i][0] (degree_u,
+  // knots_u) by this vector, mm.
+  Eigen::Vector3d extrusion_mm = Eigen::Vector3d::Zero();
   // The face keeps the first trim_u of the u range (1: the whole surface;
   // less: a trimmed face).
   double trim_u = 1.0;

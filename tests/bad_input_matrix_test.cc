@@ -103,7 +103,8 @@ TEST_F(BadInputMatrixTest, CadSurfaceErrorsExitOneNamingTheFileAndFace) {
   ruled.knots_u = {0, 0, 0, 0, 1, 1, 1, 1};
   ruled.knots_v = {0, 0, 1, 1};
   for (int i = 0; i < 4; ++i) {
-    ruled.poles.push_back({Eigen::Vector3d(10.0 * i, 0, 0), Eigen::Vector3d(10.0 * i, 5.0 + i * i, 30)});
+    ruled.poles.push_back(
+        {Eigen::Vector3d(10.0 * i, 0, 0), Eigen::Vector3d(10.0 * i, 5.0 + i * i, 30)});
   }
   CadPatch plane = ruled;
   plane.as_plane = true;

@@ -172,6 +172,29 @@ TEST_F(CadIoTest, BezierRuledFaceIsExact) {
       kTolMm);
 }
 
+TEST_F(CadIoTest, LinearExtrusionOfABSplineIsExactlyRuled) {
+  const Rails rails;
+  CadPatch patch = rails.Patch();
+  const Eigen::Vector3d d(3.0, -4.0, 30.0);
+  patch.extrusion_mm = d;
+  std::vector<Eigen::Vector3d> moved;
+  for (const Eigen::Vector3d& p : rails.c0) moved.push_back(p + d);
+  BSplineCurve r0, r1;
+  ASSERT_TRUE(BSplineCurve::Create(3, rails.knots, rails.c0, "0", &r0).ok());
+  ASSERT_TRUE(BSplineCurve::Create(3, rails.knots, moved, "1", &r1).ok());
+  const RuledSurface expected("e", r0, r1, CutterSide::kPositive);
+  for (const std::string name : {"extrusion.stp", "extrusion.igs"}) {
+    RuledSurface surface;
+    CadSurfaceInfo info;
+    const Status s =
+        ReadCadRuledSurface(Write(name, {patch}), {}, &surface, &info);
+    ASSERT_TRUE(s.ok()) << s.message();
+    EXPECT_EQ(info.face.surface_type, "Geom_SurfaceOfLinearExtrusion") << name;
+    EXPECT_TRUE(info.exact_ruled) << name;
+    EXPECT_LT(MaxGridGapMm(surface, expected), kTolMm) << name;
+  }
+}
+
 TEST_F(CadIoTest, RationalFacesAreRefusedByNameUnlessTheWeightsAreEqual) {
   const Rails rails;
   CadPatch patch = rails.Patch();
@@ -311,9 +334,10 @@ TEST_F(CadIoTest, SeveralFacesAreListedAndChosenByIndex) {
   EXPECT_EQ(info.face_count, 3);
   options.face_index = 2;
   error = ReadError(path, options);
-  EXPECT_NE(error.find("three.stp: face 2 is a Geom_Plane, not a B-spline or "
-                       "Bezier surface"),
-            std::string::npos)
+  EXPECT_NE(
+      error.find("three.stp: face 2 is a Geom_Plane, not a B-spline, Bezier or "
+                 "linear extrusion surface"),
+      std::string::npos)
       << error;
   options.face_index = 3;
   error = ReadError(path, options);
