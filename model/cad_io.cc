@@ -23,6 +23,9 @@
 #include <IGESData_IGESModel.hxx>
 #include <IGESData_IGESWriter.hxx>
 #include <IGESSelect_WorkLibrary.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <Interface_InterfaceModel.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
@@ -43,6 +46,8 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
+#include <XSControl_Reader.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -138,6 +143,29 @@ Status CheckComplete(const std::string& path, const std::string& text) {
   return Status::Ok();
 }
 
+// Fails naming the first entity the parser flagged: OCCT 7.6 goes on to
+// transfer such a model, and a B-spline whose control point refers to a
+// missing or wrong entity crashes its STEP translator (README).
+Status CheckParsed(const std::string& path, XSControl_Reader& reader) {
+  const Interface_CheckIterator checks = reader.WS()->ModelCheckList();
+  if (checks.IsEmpty(true)) return Status::Ok();
+  const Handle(Interface_InterfaceModel) model = reader.WS()->Model();
+  for (checks.Start(); checks.More(); checks.Next()) {
+    const Handle(Interface_Check)& check = checks.Value();
+    if (!check->HasFailed()) continue;
+    std::string where;
+    const int number = checks.Number();
+    if (number > 0 && !model.IsNull() && number <= model->NbEntities()) {
+      where =
+          "entity " +
+          std::string(model->StringLabel(model->Value(number))->ToCString()) +
+          ": ";
+    }
+    return Status::Error(path + ": " + where + check->CFail(1));
+  }
+  return Status::Error(path + ": the parser reported errors");
+}
+
 struct LoadedFile {
   std::vector<TopoDS_Face> faces;
   std::string length_unit;
@@ -159,6 +187,8 @@ Status LoadFaces(const std::string& path, LoadedFile* loaded) {
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
       return Status::Error(path + ": not a readable STEP file");
     }
+    s = CheckParsed(path, reader);
+    if (!s.ok()) return s;
     reader.TransferRoots();
     shape = reader.OneShape();
     TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
@@ -169,6 +199,8 @@ Status LoadFaces(const std::string& path, LoadedFile* loaded) {
     if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
       return Status::Error(path + ": not a readable IGES file");
     }
+    s = CheckParsed(path, reader);
+    if (!s.ok()) return s;
     reader.TransferRoots();
     shape = reader.OneShape();
     const Handle(TCollection_HAsciiString) unit =

@@ -380,12 +380,25 @@ TEST_F(CadIoTest, BadFilesNameTheFile) {
   std::ofstream(dir_.File("junk.step"))
       << "ISO-10303-21;\nthis is no STEP\nEND-ISO-10303-21;\n";
   Write("vertex.stp", {});
+  // A control point that refers to no entity, or to one of the wrong type:
+  // both crashed OCCT 7.6's STEP translator before the parser's checks
+  // were read (README, "Surfaces from CAD files").
+  std::string hypar =
+      testing::ReadFileText(SourcePath("data/surfaces/hypar.stp"));
+  const size_t net = hypar.find("(#32,#33)");
+  ASSERT_NE(net, std::string::npos);
+  std::ofstream(dir_.File("dangling.stp"))
+      << std::string(hypar).replace(net, 9, "(#32,#99999)");
+  std::ofstream(dir_.File("wrongtype.stp"))
+      << std::string(hypar).replace(net, 9, "(#32,#3)");
   const std::pair<std::string, std::string> rows[] = {
       {"empty.stp", "empty.stp: the file is empty"},
       {"half.stp", "half.stp: truncated STEP file"},
       {"half.igs", "half.igs: truncated IGES file"},
       {"junk.step", "junk.step: "},
       {"vertex.stp", "vertex.stp: the file holds no surface"},
+      {"dangling.stp", "dangling.stp: Unresolved Reference"},
+      {"wrongtype.stp", "wrongtype.stp: entity #31: Parameter n0.2"},
       {"missing.stp", "missing.stp: cannot open"},
   };
   for (const auto& [name, expected] : rows) {
