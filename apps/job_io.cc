@@ -61,6 +61,16 @@ Status LoadRuledSurface(const std::string& path, RuledSurface* surface,
   return s;
 }
 
+Status LoadBSplineSurface(const std::string& path, BSplineSurface* surface,
+                          std::optional<CadSurfaceInfo>* cad) {
+  if (!IsCadSurfacePath(path)) return ReadBSplineSurfaceJson(path, surface);
+  CadSurfaceInfo info;
+  double side_sign = 1.0;
+  Status s = ReadCadBSplineSurface(path, CadOptionsFromFlags(), surface, &side_sign, &info);
+  if (s.ok() && cad != nullptr) *cad = info;
+  return s;
+}
+
 Status LoadFreeformSurface(const std::string& path, FreeformSurface* surface,
                            std::optional<CadSurfaceInfo>* cad) {
   if (!IsCadSurfacePath(path)) return ReadFreeformSurfaceJson(path, surface);
@@ -74,25 +84,11 @@ Status LoadFreeformSurface(const std::string& path, FreeformSurface* surface,
     return Status::Error(what + ": degree " + std::to_string(bspline.degree_u()) + " x " +
                          std::to_string(bspline.degree_v()) + ", stripwidth needs bicubic");
   }
-  std::vector<std::vector<Eigen::Vector3d>> net(bspline.rows(),
-                                                std::vector<Eigen::Vector3d>(bspline.cols()));
-  for (int i = 0; i < bspline.rows(); ++i) {
-    for (int j = 0; j < bspline.cols(); ++j) net[i][j] = bspline.control_point(i, j);
-  }
   const size_t slash = path.find_last_of('/');
-  s = FreeformSurface::Create(path.substr(slash == std::string::npos ? 0 : slash + 1) + " face " +
-                                  std::to_string(info.face.index),
-                              bspline.knots_u(), bspline.knots_v(), net, side_sign, what, surface);
-  if (s.ok() && cad != nullptr) *cad = info;
-  return s;
-}
-
-Status LoadBSplineSurface(const std::string& path, BSplineSurface* surface,
-                          std::optional<CadSurfaceInfo>* cad) {
-  if (!IsCadSurfacePath(path)) return ReadBSplineSurfaceJson(path, surface);
-  CadSurfaceInfo info;
-  double side_sign = 1.0;
-  Status s = ReadCadBSplineSurface(path, CadOptionsFromFlags(), surface, &side_sign, &info);
+  const std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1) + " face " +
+                           std::to_string(info.face.index);
+  s = FreeformSurface::Create(name, bspline.knots_u(), bspline.knots_v(), PatchOf(bspline).poles,
+                              side_sign, what, surface);
   if (s.ok() && cad != nullptr) *cad = info;
   return s;
 }

@@ -53,6 +53,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <gp_Pln.hxx>
 #include <limits>
 #include <sstream>
@@ -166,6 +167,19 @@ Status CheckParsed(const std::string& path, XSControl_Reader& reader) {
   return Status::Error(path + ": the parser reported errors");
 }
 
+// Parses the file, checks the parse and translates every root.
+Status ReadAndTransfer(const std::string& path, const std::string& format,
+                       XSControl_Reader* reader, TopoDS_Shape* shape) {
+  if (reader->ReadFile(path.c_str()) != IFSelect_RetDone) {
+    return Status::Error(path + ": not a readable " + format + " file");
+  }
+  Status s = CheckParsed(path, *reader);
+  if (!s.ok()) return s;
+  reader->TransferRoots();
+  *shape = reader->OneShape();
+  return Status::Ok();
+}
+
 struct LoadedFile {
   std::vector<TopoDS_Face> faces;
   std::string length_unit;
@@ -184,25 +198,15 @@ Status LoadFaces(const std::string& path, LoadedFile* loaded) {
   TopoDS_Shape shape;
   if (IsStep(path)) {
     STEPControl_Reader reader;
-    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
-      return Status::Error(path + ": not a readable STEP file");
-    }
-    s = CheckParsed(path, reader);
+    s = ReadAndTransfer(path, "STEP", &reader, &shape);
     if (!s.ok()) return s;
-    reader.TransferRoots();
-    shape = reader.OneShape();
     TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
     reader.FileUnits(lengths, angles, solid_angles);
     if (!lengths.IsEmpty()) loaded->length_unit = lengths.First().ToCString();
   } else {
     IGESControl_Reader reader;
-    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) {
-      return Status::Error(path + ": not a readable IGES file");
-    }
-    s = CheckParsed(path, reader);
+    s = ReadAndTransfer(path, "IGES", &reader, &shape);
     if (!s.ok()) return s;
-    reader.TransferRoots();
-    shape = reader.OneShape();
     const Handle(TCollection_HAsciiString) unit =
         reader.IGESModel()->GlobalSection().UnitName();
     if (!unit.IsNull()) loaded->length_unit = unit->ToCString();
@@ -278,6 +282,7 @@ std::string Listing(const std::vector<CadFaceSummary>& faces) {
 
 // The chosen face, with its natural surface as a clamped B-spline.
 struct ChosenFace {
+  std::string what;  // "file: face N", the start of its messages
   CadFaceSummary summary;
   Handle(Geom_BSplineSurface) bspline;
   bool trimmed = false;
@@ -309,6 +314,7 @@ Status ChooseFace(const std::string& path, const LoadedFile& loaded,
                          Listing(summaries));
   }
   const std::string what = path + ": face " + std::to_string(index);
+  chosen->what = what;
   chosen->summary = summaries[index];
   chosen->trimmed = trims[index];
   chosen->reversed = loaded.faces[index].Orientation() == TopAbs_REVERSED;
@@ -359,6 +365,27 @@ Status ChooseFace(const std::string& path, const LoadedFile& loaded,
   if (bs->IsVPeriodic()) bs->SetVNotPeriodic();
   chosen->bspline = bs;
   return Status::Ok();
+}
+
+// Runs `body`, turning an OCCT exception into an error naming the file:
+// the library throws none.
+Status GuardOcct(const std::string& path, const std::function<Status()>& body) {
+  try {
+    return body();
+  } catch (const Standard_Failure& failure) {
+    return Status::Error(path +
+                         ": OpenCASCADE failed: " + FailureText(failure));
+  }
+}
+
+// Validates the options, reads the file and picks the face.
+Status LoadChosenFace(const std::string& path, const CadReadOptions& options,
+                      LoadedFile* loaded, ChosenFace* face) {
+  std::string why;
+  if (!options.IsValid(&why)) return Status::Error(path + ": " + why);
+  Status s = LoadFaces(path, loaded);
+  if (s.ok()) s = ChooseFace(path, *loaded, options.face_index, face);
+  return s;
 }
 
 std::vector<double> FlatKnots(const Handle(Geom_BSplineSurface) & bs,
@@ -694,7 +721,7 @@ std::string CadFaceSummary::Describe() const {
 
 Status ListCadFaces(const std::string& path,
                     std::vector<CadFaceSummary>* faces) {
-  try {
+  return GuardOcct(path, [&]() {
     LoadedFile loaded;
     Status s = LoadFaces(path, &loaded);
     if (!s.ok()) return s;
@@ -705,25 +732,18 @@ Status ListCadFaces(const std::string& path,
                                  NaturalSurface(loaded.faces[i], &trimmed)));
     }
     return Status::Ok();
-  } catch (const Standard_Failure& failure) {
-    return Status::Error(path +
-                         ": OpenCASCADE failed: " + FailureText(failure));
-  }
+  });
 }
 
 Status ReadCadRuledSurface(const std::string& path,
                            const CadReadOptions& options, RuledSurface* surface,
                            CadSurfaceInfo* info) {
-  std::string why;
-  if (!options.IsValid(&why)) return Status::Error(path + ": " + why);
-  try {
+  return GuardOcct(path, [&]() {
     LoadedFile loaded;
     ChosenFace face;
-    Status s = LoadFaces(path, &loaded);
-    if (s.ok()) s = ChooseFace(path, loaded, options.face_index, &face);
+    Status s = LoadChosenFace(path, options, &loaded, &face);
     if (!s.ok()) return s;
-    const std::string what =
-        path + ": face " + std::to_string(face.summary.index);
+    const std::string& what = face.what;
     const Handle(Geom_BSplineSurface)& bs = face.bspline;
     const std::string name =
         Stem(path) + " face " + std::to_string(face.summary.index);
@@ -771,26 +791,19 @@ Status ReadCadRuledSurface(const std::string& path,
       return Status::Error(err.str());
     }
     return Status::Ok();
-  } catch (const Standard_Failure& failure) {
-    return Status::Error(path +
-                         ": OpenCASCADE failed: " + FailureText(failure));
-  }
+  });
 }
 
 Status ReadCadBSplineSurface(const std::string& path,
                              const CadReadOptions& options,
                              BSplineSurface* surface, double* cutter_side_sign,
                              CadSurfaceInfo* info) {
-  std::string why;
-  if (!options.IsValid(&why)) return Status::Error(path + ": " + why);
-  try {
+  return GuardOcct(path, [&]() {
     LoadedFile loaded;
     ChosenFace face;
-    Status s = LoadFaces(path, &loaded);
-    if (s.ok()) s = ChooseFace(path, loaded, options.face_index, &face);
+    Status s = LoadChosenFace(path, options, &loaded, &face);
     if (!s.ok()) return s;
-    const std::string what =
-        path + ": face " + std::to_string(face.summary.index);
+    const std::string& what = face.what;
     const Handle(Geom_BSplineSurface)& bs = face.bspline;
     if (bs->UDegree() > BSplineSurface::kMaxDegree ||
         bs->VDegree() > BSplineSurface::kMaxDegree) {
@@ -807,10 +820,7 @@ Status ReadCadBSplineSurface(const std::string& path,
     FillInfo(path, loaded, face, info);
     info->ruling.clear();
     return Status::Ok();
-  } catch (const Standard_Failure& failure) {
-    return Status::Error(path +
-                         ": OpenCASCADE failed: " + FailureText(failure));
-  }
+  });
 }
 
 Status WriteCadPatches(const std::string& path,
@@ -820,7 +830,7 @@ Status WriteCadPatches(const std::string& path,
   if (!options.IsValid(&why)) return Status::Error(path + ": " + why);
   if (!IsCadSurfacePath(path))
     return Status::Error(path + ": not a .stp/.step/.igs/.iges name");
-  try {
+  return GuardOcct(path, [&]() {
     SilenceOcct();
     TopoDS_Shape shape;
     if (patches.empty()) {
@@ -843,10 +853,7 @@ Status WriteCadPatches(const std::string& path,
       shape = compound;
     }
     return WriteShape(path, shape, options);
-  } catch (const Standard_Failure& failure) {
-    return Status::Error(path +
-                         ": OpenCASCADE failed: " + FailureText(failure));
-  }
+  });
 }
 
 Status WriteCadRuledSurface(const std::string& path,
@@ -854,7 +861,7 @@ Status WriteCadRuledSurface(const std::string& path,
                             const CadWriteOptions& options) {
   std::string why;
   if (!options.IsValid(&why)) return Status::Error(path + ": " + why);
-  try {
+  return GuardOcct(path, [&]() {
     Handle(Geom_BSplineCurve) rails[2];
     for (int r = 0; r < 2; ++r) {
       const BSplineCurve& rail = surface.rail(r);
@@ -889,10 +896,7 @@ Status WriteCadRuledSurface(const std::string& path,
     if (surface.cutter_side() == CutterSide::kNegative) face.Reverse();
     SilenceOcct();
     return WriteShape(path, face, options);
-  } catch (const Standard_Failure& failure) {
-    return Status::Error(path +
-                         ": OpenCASCADE failed: " + FailureText(failure));
-  }
+  });
 }
 
 }  // namespace tpopt

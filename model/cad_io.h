@@ -121,6 +121,22 @@ struct CadPatch {
   double trim_u = 1.0;
 };
 
+// The patch of a B-spline surface (its normalised knots and its net).
+inline CadPatch PatchOf(const BSplineSurface& surface) {
+  CadPatch patch;
+  patch.degree_u = surface.degree_u();
+  patch.degree_v = surface.degree_v();
+  patch.knots_u = surface.knots_u();
+  patch.knots_v = surface.knots_v();
+  patch.poles.assign(surface.rows(),
+                     std::vector<Eigen::Vector3d>(surface.cols()));
+  for (int i = 0; i < surface.rows(); ++i) {
+    for (int j = 0; j < surface.cols(); ++j)
+      patch.poles[i][j] = surface.control_point(i, j);
+  }
+  return patch;
+}
+
 struct CadWriteOptions {
   // The file's length unit: "MM" or "INCH" (coordinates are converted).
   std::string length_unit = "MM";

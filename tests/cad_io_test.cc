@@ -271,16 +271,7 @@ TEST_F(CadIoTest, BicubicFreeformSurfaceReadsBackExactly) {
       ReadBSplineSurfaceJson(
           SourcePath("data/surfaces/propeller_blade_freeform.json"), &json)
           .ok());
-  CadPatch patch;
-  patch.degree_u = json.degree_u();
-  patch.degree_v = json.degree_v();
-  patch.knots_u = json.knots_u();
-  patch.knots_v = json.knots_v();
-  for (int i = 0; i < json.rows(); ++i) {
-    patch.poles.emplace_back();
-    for (int j = 0; j < json.cols(); ++j)
-      patch.poles.back().push_back(json.control_point(i, j));
-  }
+  const CadPatch patch = PatchOf(json);
   for (const std::string name : {"blade.step", "blade.iges"}) {
     BSplineSurface read;
     CadSurfaceInfo info;
@@ -575,17 +566,7 @@ TEST(CadSurfaceCliTest, StripwidthAndPencilReadStepFaces) {
   const std::string pencil_json =
       SourcePath("data/pencil/surface_120x120x55.json");
   ASSERT_TRUE(ReadBSplineSurfaceJson(pencil_json, &json).ok());
-  CadPatch patch;
-  patch.degree_u = json.degree_u();
-  patch.degree_v = json.degree_v();
-  patch.knots_u = json.knots_u();
-  patch.knots_v = json.knots_v();
-  for (int i = 0; i < json.rows(); ++i) {
-    patch.poles.emplace_back();
-    for (int j = 0; j < json.cols(); ++j) {
-      patch.poles.back().push_back(json.control_point(i, j));
-    }
-  }
+  const CadPatch patch = PatchOf(json);
   ASSERT_TRUE(WriteCadPatches(dir.File("pencil.stp"), {patch}, {}).ok());
   for (const std::string& surface : {pencil_json, dir.File("pencil.stp")}) {
     const std::string name = surface == pencil_json ? "pj" : "ps";

@@ -30,16 +30,7 @@ int Run(const std::string& source_dir) {
   if (s.ok()) s = ReadBSplineSurfaceJson(dir + freeform + ".json", &bspline);
   if (s.ok()) s = ReadFreeformSurfaceJson(dir + freeform + ".json", &with_side);
   if (s.ok()) {
-    CadPatch patch;
-    patch.degree_u = bspline.degree_u();
-    patch.degree_v = bspline.degree_v();
-    patch.knots_u = bspline.knots_u();
-    patch.knots_v = bspline.knots_v();
-    for (int i = 0; i < bspline.rows(); ++i) {
-      patch.poles.emplace_back();
-      for (int j = 0; j < bspline.cols(); ++j)
-        patch.poles.back().push_back(bspline.control_point(i, j));
-    }
+    CadPatch patch = PatchOf(bspline);
     patch.reversed = with_side.cutter_side_sign() < 0;
     s = WriteCadPatches(dir + freeform + ".stp", {patch}, CadWriteOptions());
   }
