@@ -544,7 +544,7 @@ TEST(CadSurfaceCliTest, StripwidthAndPencilReadStepFaces) {
   const std::string machine = SourcePath("data/machines/jcde2022_ac.json");
   for (const std::string ext : {"json", "stp"}) {
     const auto r = RunCommand(
-        Tpopt("stripwidth --quiet --method=mpec --cutter=torus:8,2 "
+        Tpopt("stripwidth --quiet --method=sturz --cutter=torus:8,2 "
               "--tolerance_mm=0.01 "
               "--cc_points=6 --surface=" +
               SourcePath("data/surfaces/propeller_blade_freeform." + ext) +
