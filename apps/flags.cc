@@ -1,7 +1,9 @@
 #include "apps/flags.h"
 
 DEFINE_string(surface, "", "Ruled surface JSON (DESIGN.md format).");
-DEFINE_string(machine, "", "Machine JSON (xyzac-trt kinematics and axis limits).");
+DEFINE_string(machine, "",
+              "Machine JSON (xyzac-trt kinematics and axis limits), or a LinuxCNC INI "
+              "(*.ini, xyzac-trt-kins: its joint/axis limits and kinematics pins).");
 DEFINE_string(in, "", "Input tool path: APT CL (.cls, .apt, .cl) or LinuxCNC G-code (.ngc, .nc).");
 DEFINE_string(out, "",
               "Output tool path, APT or G-code by its extension; written whole or not at all.");

@@ -10,6 +10,7 @@
 #include "model/apt_io.h"
 #include "model/gcode_io.h"
 #include "model/json_io.h"
+#include "model/linuxcnc_ini.h"
 
 namespace tpopt {
 namespace {
@@ -81,6 +82,7 @@ Status LoadMachine(const std::string& path, Machine* machine) {
     machine->name = "ideal A/C table at the origin, no limits";
     return Status::Ok();
   }
+  if (IsLinuxCncIni(path)) return ReadLinuxCncIni(path, machine);
   return ReadMachineJson(path, machine);
 }
 
