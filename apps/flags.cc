@@ -111,6 +111,16 @@ DEFINE_double(link_feed_ratio, 10.0,
 DEFINE_bool(schedule_feed, true,
             "smooth: lower the feed move by move where an axis would still exceed its velocity, "
             "acceleration or jerk limit (solver/feed_scheduler.h).");
+DEFINE_string(feed_mode, "lower",
+              "smooth, with --schedule_feed: lower (feeds only come down, where a limit needs) "
+              "or raise (every feed move starts at min(--max_feed_mm_per_min, "
+              "--max_feed_factor x its programmed feed) and comes down where a limit needs).");
+DEFINE_double(max_feed_mm_per_min, 0.0,
+              "smooth, --feed_mode=raise: highest feed of any move, mm/min (0 = no cap but "
+              "--max_feed_factor).");
+DEFINE_double(max_feed_factor, 2.0,
+              "smooth, --feed_mode=raise: highest feed of a move as a factor of its programmed "
+              "feed (>= 1).");
 DEFINE_double(resample_step_mm, 0.0,
               "smooth: resample the output with cubic splines through the tip and A, C at this "
               "arc-length step, mm (0 keeps the input's poses).");
