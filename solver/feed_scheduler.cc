@@ -50,6 +50,18 @@ int CorrectOnce(const Machine& machine, const MotionSamples& m, double margin,
   return violations;
 }
 
+// One pass over `path` as it stands: its samples, and in `scale` the factor
+// of each segment's feed that its violations ask; counts them in `report`.
+MotionSamples CorrectPass(const Machine& machine, const std::vector<JointVector>& joints,
+                          const FeedScheduleOptions& options, const ToolPath& path, int pass,
+                          std::vector<double>* scale, FeedScheduleReport* report) {
+  MotionSamples m = ComputeMotionSamples(machine, path, joints, options.default_feed_mm_per_min);
+  scale->assign(path.poses.size() - 1, 1.0);
+  report->violations_left = CorrectOnce(machine, m, options.margin, scale);
+  report->passes = pass + 1;
+  return m;
+}
+
 // kRaise: feed[i] is the feed of the move into pose i. Starts at each
 // move's ceiling; each pass bounds the ratio of neighbouring feeds, then
 // lowers the feeds around every violation; ends when a pass finds none.
@@ -75,11 +87,8 @@ void RaiseFeeds(const Machine& machine, const std::vector<JointVector>& joints,
     for (size_t i = 1; i < n; ++i) {
       if (cutting[i - 1]) path->poses[i].feed_mm_per_min = feed[i];
     }
-    const MotionSamples m =
-        ComputeMotionSamples(machine, *path, joints, options.default_feed_mm_per_min);
-    std::vector<double> scale(n - 1, 1.0);
-    report->violations_left = CorrectOnce(machine, m, options.margin, &scale);
-    report->passes = pass + 1;
+    std::vector<double> scale;
+    CorrectPass(machine, joints, options, *path, pass, &scale, report);
     if (report->violations_left == 0) break;
     for (size_t i = 0; i + 1 < n; ++i) feed[i + 1] *= scale[i];
   }
@@ -125,11 +134,8 @@ Status ScheduleFeed(const Machine& machine, const std::vector<JointVector>& join
   }
   const double step = 1.0 + options.max_feed_step;
   for (int pass = 0; options.mode == FeedMode::kLower && pass < options.max_passes; ++pass) {
-    const MotionSamples m =
-        ComputeMotionSamples(machine, *path, joints, options.default_feed_mm_per_min);
-    std::vector<double> scale(n - 1, 1.0);
-    report->violations_left = CorrectOnce(machine, m, options.margin, &scale);
-    report->passes = pass + 1;
+    std::vector<double> scale;
+    const MotionSamples m = CorrectPass(machine, joints, options, *path, pass, &scale, report);
     if (report->violations_left == 0) break;
     std::vector<double> feed(n - 1);
     for (size_t i = 0; i + 1 < n; ++i) feed[i] = path->poses[i + 1].feed_mm_per_min * scale[i];
