@@ -118,6 +118,9 @@ DEFINE_string(feed_mode, "lower",
 DEFINE_double(max_feed_mm_per_min, 0.0,
               "smooth, --feed_mode=raise: highest feed of any move, mm/min (0 = no cap but "
               "--max_feed_factor).");
+DEFINE_double(max_feed_step, 0.1,
+              "smooth, with --schedule_feed: largest relative change of feed between "
+              "neighbouring feed moves that the scheduler makes (> 0).");
 DEFINE_double(max_feed_factor, 2.0,
               "smooth, --feed_mode=raise: highest feed of a move as a factor of its programmed "
               "feed (>= 1).");

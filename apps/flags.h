@@ -78,6 +78,7 @@ DECLARE_bool(schedule_feed);
 DECLARE_string(feed_mode);
 DECLARE_double(max_feed_mm_per_min);
 DECLARE_double(max_feed_factor);
+DECLARE_double(max_feed_step);
 DECLARE_double(resample_step_mm);
 // stripwidth
 DECLARE_string(method);

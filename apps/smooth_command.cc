@@ -111,9 +111,10 @@ int RunSmooth(const Invocation& invocation) {
     settings.feed.max_feed_mm_per_min = FLAGS_max_feed_mm_per_min;
   }
   settings.feed.max_feed_factor = FLAGS_max_feed_factor;
+  settings.feed.max_feed_step = FLAGS_max_feed_step;
   std::string feed_why;
   if (s.ok() && !settings.feed.IsValid(&feed_why)) {
-    s = Status::Error("--max_feed_mm_per_min, --max_feed_factor: " + feed_why);
+    s = Status::Error("--max_feed_mm_per_min, --max_feed_factor, --max_feed_step: " + feed_why);
   }
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
   LinkMoveOptions links;

@@ -37,6 +37,26 @@ out_dir="$(cd "$out_dir" && pwd)"
 exec 9> /tmp/tpopt-linuxcnc.lock
 flock 9
 
+# HAL's shared memory is machine-wide too. `rs274 -i` of an INI with
+# HAL_PIN_VARS run as root leaves its segments behind (owner root, mode 0600,
+# nothing attached), and then no other user's LinuxCNC can start: remove
+# such leftovers, and wait while a live HAL has them attached.
+hal_segments() { ipcs -m | awk '$1 == "0x48484c34" || $1 == "0x48414c32" {print $2, $6}'; }
+for attempt in $(seq 1 60); do
+  live=0
+  while read -r id attached; do
+    if [ "$attached" = 0 ]; then ipcrm -m "$id" 2> /dev/null || true; else live=1; fi
+  done < <(hal_segments)
+  [ "$live" = 0 ] && break
+  [ "$attempt" = 1 ] && echo "$0: waiting for another HAL (LinuxCNC) instance to end" >&2
+  sleep 5
+done
+if [ -n "$(hal_segments)" ]; then
+  echo "$0: HAL shared memory is in use or cannot be removed (ipcs -m: keys 0x48484c34," \
+    "0x48414c32); end that LinuxCNC or remove the segments as their owner" >&2
+  exit 1
+fi
+
 scratch="$(mktemp -d /tmp/tpopt-cnc.XXXXXX)"
 [ -n "${TPOPT_CNC_KEEP:-}" ] || trap 'rm -rf "$scratch"' EXIT
 cp "$here/xyzac-trt.ini" "$here/sampler.hal" "$here/display.py" "$scratch/"
