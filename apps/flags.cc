@@ -111,6 +111,10 @@ DEFINE_double(link_feed_ratio, 10.0,
 DEFINE_bool(schedule_feed, true,
             "smooth: lower the feed move by move where an axis would still exceed its velocity, "
             "acceleration or jerk limit (solver/feed_scheduler.h).");
+DEFINE_string(cnc_summary, "",
+              "smooth, evaluate: summary.json of benchmarks/linuxcnc/run.sh for the program this "
+              "command writes (smooth) or reads (evaluate): the report and the HTML report show "
+              "the controller's cycle time, stops and A/C motion beside tpopt's prediction.");
 DEFINE_string(feed_mode, "lower",
               "smooth, with --schedule_feed: lower (feeds only come down, where a limit needs) "
               "or raise (every feed move starts at min(--max_feed_mm_per_min, "

@@ -113,6 +113,10 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   if (s.ok()) s = LoadToolPath(FLAGS_in, job->machine, quiet, &job->path);
   if (s.ok()) MarkLinkMoves(links, &job->path);
   if (s.ok() && job->has_surface) s = ReadSurfaceJson(FLAGS_surface, &job->surface);
+  if (s.ok() && !FLAGS_cnc_summary.empty()) {
+    job->controller.emplace();
+    s = ReadControllerRun(FLAGS_cnc_summary, &*job->controller);
+  }
   if (s.ok()) {
     s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius, FLAGS_flute_length,
                       &job->cutter);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/controller_run.h"
 #include "model/apt_io.h"
 #include "model/cutter.h"
 #include "model/link_moves.h"
@@ -47,6 +48,8 @@ struct Job {
   bool has_surface = false;
   Machine machine;
   Cutter cutter;
+  // From --cnc_summary, if given.
+  std::optional<ControllerRun> controller;
   const RuledSurface* surface_or_null() const { return has_surface ? &surface : nullptr; }
 };
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "apps/commands.h"
+#include "apps/controller_run.h"
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
 #include "apps/job_io.h"
@@ -44,7 +45,12 @@ Status WriteOutputs(const Invocation& invocation, const Job& job, const Smoothin
                     const ToolPath& written, const std::vector<AptCurveSpan>& spans) {
   Status s = SaveToolPath(FLAGS_out, job.machine, written, spans);
   if (s.ok() && !FLAGS_report.empty()) {
-    s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));
+    nlohmann::json report = SmoothReportJson(invocation, FLAGS_mode, result);
+    if (job.controller) {
+      report["controller"] =
+          ControllerRunJson(*job.controller, result.output_metrics.motion.machining_time_s);
+    }
+    s = WriteReport(FLAGS_report, report);
   }
   if (s.ok()) {
     s = WritePictures("tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in,
