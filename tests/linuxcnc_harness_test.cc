@@ -97,6 +97,18 @@ TEST(LinuxCncHarnessTest, SmoothedProgramRunsAndMovesTheRotariesMoreGently) {
   for (const std::string axis : {"A", "C"}) {
     EXPECT_LT(P99Acceleration(summary[1], axis), P99Acceleration(summary[0], axis)) << axis;
   }
+  // tpopt's reports show the controller's run beside the prediction.
+  const std::string report = dir.File("report.json"), html = dir.File("report.html");
+  const auto evaluate = RunCommand(Tpopt("evaluate --in=" + smoothed + " --machine=" + kSample +
+                                         "/xyzac-trt.ini --cutter_radius=3 --cnc_summary=" +
+                                         dir.File("cnc_smoothed/summary.json") + " --report=" +
+                                         report + " --html=" + html + " --quiet"));
+  ASSERT_EQ(evaluate.exit_code, 0) << evaluate.output;
+  const nlohmann::json controller = ReadJson(report)["controller"];
+  EXPECT_EQ(controller["cycle_time_s"], summary[1]["cycle_time_s"]);
+  EXPECT_EQ(controller["predicted_time_s"], ReadJson(report)["machining_time_s"]);
+  std::printf("smoothed: tpopt predicted %.3f s\n", controller["predicted_time_s"].get<double>());
+  EXPECT_NE(testing::ReadFileText(html).find("On LinuxCNC's controller"), std::string::npos);
   // At the program's own feeds the cycle time stays.
   EXPECT_NEAR(summary[1]["cycle_time_s"].get<double>(), summary[0]["cycle_time_s"].get<double>(),
               0.02 * summary[0]["cycle_time_s"].get<double>());
