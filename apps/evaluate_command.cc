@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "apps/commands.h"
+#include "apps/controller_run.h"
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
 #include "apps/huge_page_malloc.h"
@@ -58,6 +59,9 @@ int RunEvaluate(const Invocation& invocation) {
   report["poses_out"] = metrics.poses;
   report["solve_time_s"] = 0.0;
   report["iterations"] = 0;
+  if (job.controller) {
+    report["controller"] = ControllerRunJson(*job.controller, metrics.motion.machining_time_s);
+  }
   s = WriteReport(FLAGS_report, report);
   if (s.ok()) {
     // The file name alone labels the plots: a folder path would not fit the legend.

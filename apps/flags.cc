@@ -14,7 +14,9 @@ DEFINE_bool(flip_cutter_side, false,
 DEFINE_double(max_ruled_deviation_mm, 0.01,
               "STEP/IGES --surface: refuse a face that is not exactly ruled when it lies farther "
               "than this from the ruled surface between its boundary curves, mm.");
-DEFINE_string(machine, "", "Machine JSON (xyzac-trt kinematics and axis limits).");
+DEFINE_string(machine, "",
+              "Machine JSON (xyzac-trt kinematics and axis limits), or a LinuxCNC INI "
+              "(*.ini, xyzac-trt-kins: its joint/axis limits and kinematics pins).");
 DEFINE_string(in, "", "Input tool path: APT CL (.cls, .apt, .cl) or LinuxCNC G-code (.ngc, .nc).");
 DEFINE_string(out, "",
               "Output tool path, APT or G-code by its extension; written whole or not at all.");
@@ -122,6 +124,23 @@ DEFINE_double(link_feed_ratio, 10.0,
 DEFINE_bool(schedule_feed, true,
             "smooth: lower the feed move by move where an axis would still exceed its velocity, "
             "acceleration or jerk limit (solver/feed_scheduler.h).");
+DEFINE_string(cnc_summary, "",
+              "smooth, evaluate: summary.json of benchmarks/linuxcnc/run.sh for the program this "
+              "command writes (smooth) or reads (evaluate): the report and the HTML report show "
+              "the controller's cycle time, stops and A/C motion beside tpopt's prediction.");
+DEFINE_string(feed_mode, "lower",
+              "smooth, with --schedule_feed: lower (feeds only come down, where a limit needs) "
+              "or raise (every feed move starts at min(--max_feed_mm_per_min, "
+              "--max_feed_factor x its programmed feed) and comes down where a limit needs).");
+DEFINE_double(max_feed_mm_per_min, 0.0,
+              "smooth, --feed_mode=raise: highest feed of any move, mm/min (0 = no cap but "
+              "--max_feed_factor).");
+DEFINE_double(max_feed_step, 0.1,
+              "smooth, with --schedule_feed: largest relative change of feed between "
+              "neighbouring feed moves that the scheduler makes (> 0).");
+DEFINE_double(max_feed_factor, 2.0,
+              "smooth, --feed_mode=raise: highest feed of a move as a factor of its programmed "
+              "feed (>= 1).");
 DEFINE_double(resample_step_mm, 0.0,
               "smooth: resample the output with cubic splines through the tip and A, C at this "
               "arc-length step, mm (0 keeps the input's poses).");

@@ -79,6 +79,11 @@ DECLARE_bool(smooth_outside_zones);
 DECLARE_bool(accept_over_tolerance);
 DECLARE_double(link_feed_ratio);
 DECLARE_bool(schedule_feed);
+DECLARE_string(feed_mode);
+DECLARE_string(cnc_summary);
+DECLARE_double(max_feed_mm_per_min);
+DECLARE_double(max_feed_factor);
+DECLARE_double(max_feed_step);
 DECLARE_double(resample_step_mm);
 // stripwidth
 DECLARE_string(method);

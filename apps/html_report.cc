@@ -182,6 +182,12 @@ std::string Versions() {
          "</td></tr>\n</table>\n";
 }
 
+std::string ControllerSection(const HtmlReportInputs& inputs) {
+  if (inputs.controller == nullptr || inputs.paths.empty()) return "";
+  return ControllerRunHtml(*inputs.controller,
+                           inputs.paths.back().metrics->motion.machining_time_s);
+}
+
 }  // namespace
 
 Status RenderHtmlReport(const HtmlReportInputs& inputs, std::string* html) {
@@ -195,7 +201,7 @@ Status RenderHtmlReport(const HtmlReportInputs& inputs, std::string* html) {
   *html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + title +
           "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" + title + "</h1>\n" +
           "<h2>Summary</h2>\n" + SummaryTable(inputs.paths) + MotionPlots(inputs, profiles) +
-          DeviationMaps(inputs.paths) + "<h2>Command line</h2>\n<pre>" +
+          DeviationMaps(inputs.paths) + ControllerSection(inputs) + "<h2>Command line</h2>\n<pre>" +
           EscapeXml(inputs.command_line) + "</pre>\n<h2>Versions</h2>\n" + Versions() +
           "</body>\n</html>\n";
   return Status::Ok();

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "apps/controller_run.h"
 #include "model/machine.h"
 #include "model/path_metrics.h"
 #include "model/status.h"
@@ -29,6 +30,9 @@ struct HtmlReportInputs {
   std::vector<ReportedPath> paths;
   const Machine* machine = nullptr;  // its limits are drawn on the plots
   double default_feed_mm_per_min = 1000.0;  // where a pose has none
+  // What LinuxCNC's controller did with the last path's program, if known;
+  // shown beside that path's predicted machining time.
+  const ControllerRun* controller = nullptr;
 };
 
 // The whole page. Fails only when a path does not fit the machine (as

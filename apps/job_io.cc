@@ -10,6 +10,7 @@
 #include "model/apt_io.h"
 #include "model/gcode_io.h"
 #include "model/json_io.h"
+#include "model/linuxcnc_ini.h"
 
 namespace tpopt {
 namespace {
@@ -149,6 +150,7 @@ Status LoadMachine(const std::string& path, Machine* machine) {
     machine->name = "ideal A/C table at the origin, no limits";
     return Status::Ok();
   }
+  if (IsLinuxCncIni(path)) return ReadLinuxCncIni(path, machine);
   return ReadMachineJson(path, machine);
 }
 
@@ -180,6 +182,10 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   if (s.ok()) MarkLinkMoves(links, &job->path);
   if (s.ok() && job->has_surface) {
     s = LoadRuledSurface(FLAGS_surface, &job->surface, &job->surface_cad);
+  }
+  if (s.ok() && !FLAGS_cnc_summary.empty()) {
+    job->controller.emplace();
+    s = ReadControllerRun(FLAGS_cnc_summary, &*job->controller);
   }
   if (s.ok()) {
     s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius, FLAGS_flute_length,

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "apps/controller_run.h"
 #include "model/apt_io.h"
 #include "model/bspline_surface.h"
 #include "model/cad_io.h"
@@ -73,6 +74,8 @@ struct Job {
   std::optional<CadSurfaceInfo> surface_cad;  // set when --surface is STEP or IGES
   Machine machine;
   Cutter cutter;
+  // From --cnc_summary, if given.
+  std::optional<ControllerRun> controller;
   const RuledSurface* surface_or_null() const { return has_surface ? &surface : nullptr; }
 };
 

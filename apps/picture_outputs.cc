@@ -20,6 +20,7 @@ Status WritePictures(const std::string& title, const std::string& command_line,
                      const std::vector<ReportedPath>& paths, const Job& job) {
   if (!FLAGS_html.empty()) {
     HtmlReportInputs inputs{title, command_line, paths, &job.machine, FLAGS_feed};
+    if (job.controller) inputs.controller = &*job.controller;
     std::string html;
     Status s = RenderHtmlReport(inputs, &html);
     if (!s.ok()) return Status::Error(FLAGS_html + ": " + s.message());

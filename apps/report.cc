@@ -106,7 +106,9 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                       {"pole_crossings", result.spline.pole_crossings}};
   report["feed_schedule"] = {{"passes", result.feed.passes},
                              {"moves_slowed", result.feed.moves_slowed},
+                             {"moves_raised", result.feed.moves_raised},
                              {"min_feed_mm_per_min", result.feed.min_feed_mm_per_min},
+                             {"max_feed_mm_per_min", result.feed.max_feed_mm_per_min},
                              {"violations_left", result.feed.violations_left}};
   const HighAccuracyReport& ha = result.high_accuracy;
   report["iterations"] = ha.iterations;

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "apps/commands.h"
+#include "apps/controller_run.h"
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
 #include "apps/job_io.h"
@@ -46,6 +47,10 @@ Status WriteOutputs(const Invocation& invocation, const Job& job, const Smoothin
   if (s.ok() && !FLAGS_report.empty()) {
     nlohmann::json report = SmoothReportJson(invocation, FLAGS_mode, result);
     if (job.surface_cad) report["surface_cad"] = CadInfoJson(*job.surface_cad);
+    if (job.controller) {
+      report["controller"] =
+          ControllerRunJson(*job.controller, result.output_metrics.motion.machining_time_s);
+    }
     s = WriteReport(FLAGS_report, report);
   }
   if (s.ok()) {
@@ -83,6 +88,10 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
     std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",
                 result.feed.moves_slowed, result.feed.min_feed_mm_per_min);
   }
+  if (result.feed.moves_raised > 0) {
+    std::printf("  feed raised on %d moves (highest %.0f mm/min) within every limit\n",
+                result.feed.moves_raised, result.feed.max_feed_mm_per_min);
+  }
 }
 
 }  // namespace
@@ -101,6 +110,19 @@ int RunSmooth(const Invocation& invocation) {
   settings.accept_over_tolerance = FLAGS_accept_over_tolerance;
   settings.resample_step_mm = FLAGS_resample_step_mm;
   settings.feed.default_feed_mm_per_min = FLAGS_feed;
+  if (s.ok() && FLAGS_feed_mode != "lower" && FLAGS_feed_mode != "raise") {
+    s = Status::Error("--feed_mode=" + FLAGS_feed_mode + " must be lower or raise");
+  }
+  settings.feed.mode = FLAGS_feed_mode == "raise" ? FeedMode::kRaise : FeedMode::kLower;
+  if (FLAGS_max_feed_mm_per_min != 0.0) {
+    settings.feed.max_feed_mm_per_min = FLAGS_max_feed_mm_per_min;
+  }
+  settings.feed.max_feed_factor = FLAGS_max_feed_factor;
+  settings.feed.max_feed_step = FLAGS_max_feed_step;
+  std::string feed_why;
+  if (s.ok() && !settings.feed.IsValid(&feed_why)) {
+    s = Status::Error("--max_feed_mm_per_min, --max_feed_factor, --max_feed_step: " + feed_why);
+  }
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
   LinkMoveOptions links;
   if (s.ok()) s = LinkMoveOptionsFromFlags(&links);

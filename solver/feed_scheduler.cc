@@ -50,6 +50,50 @@ int CorrectOnce(const Machine& machine, const MotionSamples& m, double margin,
   return violations;
 }
 
+// One pass over `path` as it stands: its samples, and in `scale` the factor
+// of each segment's feed that its violations ask; counts them in `report`.
+MotionSamples CorrectPass(const Machine& machine, const std::vector<JointVector>& joints,
+                          const FeedScheduleOptions& options, const ToolPath& path, int pass,
+                          std::vector<double>* scale, FeedScheduleReport* report) {
+  MotionSamples m = ComputeMotionSamples(machine, path, joints, options.default_feed_mm_per_min);
+  scale->assign(path.poses.size() - 1, 1.0);
+  report->violations_left = CorrectOnce(machine, m, options.margin, scale);
+  report->passes = pass + 1;
+  return m;
+}
+
+// kRaise: feed[i] is the feed of the move into pose i. Starts at each
+// move's ceiling; each pass bounds the ratio of neighbouring feeds, then
+// lowers the feeds around every violation; ends when a pass finds none.
+void RaiseFeeds(const Machine& machine, const std::vector<JointVector>& joints,
+                const FeedScheduleOptions& options, const std::vector<double>& programmed,
+                ToolPath* path, FeedScheduleReport* report) {
+  const size_t n = path->poses.size();
+  const std::vector<bool> cutting =
+      ComputeMotionSamples(machine, *path, joints, options.default_feed_mm_per_min).cutting;
+  std::vector<double> feed(n, 0.0);
+  for (size_t i = 1; i < n; ++i) {
+    feed[i] = std::min(options.max_feed_factor * programmed[i], options.max_feed_mm_per_min);
+  }
+  const double step = 1.0 + options.max_feed_step;
+  for (int pass = 0; pass < options.max_passes; ++pass) {
+    // Segment i is the move into pose i + 1.
+    for (size_t i = 1; i + 1 < n; ++i) {
+      if (cutting[i] && cutting[i - 1]) feed[i + 1] = std::min(feed[i + 1], feed[i] * step);
+    }
+    for (size_t i = n - 1; i-- > 1;) {
+      if (cutting[i] && cutting[i - 1]) feed[i] = std::min(feed[i], feed[i + 1] * step);
+    }
+    for (size_t i = 1; i < n; ++i) {
+      if (cutting[i - 1]) path->poses[i].feed_mm_per_min = feed[i];
+    }
+    std::vector<double> scale;
+    CorrectPass(machine, joints, options, *path, pass, &scale, report);
+    if (report->violations_left == 0) break;
+    for (size_t i = 0; i + 1 < n; ++i) feed[i + 1] *= scale[i];
+  }
+}
+
 }  // namespace
 
 bool FeedScheduleOptions::IsValid(std::string* why) const {
@@ -62,6 +106,10 @@ bool FeedScheduleOptions::IsValid(std::string* why) const {
     err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
   } else if (max_passes < 1) {
     err << "feed passes " << max_passes << " must be >= 1";
+  } else if (!(max_feed_mm_per_min > 0)) {
+    err << "max feed " << max_feed_mm_per_min << " mm/min must be > 0";
+  } else if (!(max_feed_factor >= 1) || !std::isfinite(max_feed_factor)) {
+    err << "max feed factor " << max_feed_factor << " must be >= 1";
   } else {
     return true;
   }
@@ -85,12 +133,9 @@ Status ScheduleFeed(const Machine& machine, const std::vector<JointVector>& join
     path->poses[i].feed_mm_per_min = programmed[i];
   }
   const double step = 1.0 + options.max_feed_step;
-  for (int pass = 0; pass < options.max_passes; ++pass) {
-    const MotionSamples m =
-        ComputeMotionSamples(machine, *path, joints, options.default_feed_mm_per_min);
-    std::vector<double> scale(n - 1, 1.0);
-    report->violations_left = CorrectOnce(machine, m, options.margin, &scale);
-    report->passes = pass + 1;
+  for (int pass = 0; options.mode == FeedMode::kLower && pass < options.max_passes; ++pass) {
+    std::vector<double> scale;
+    const MotionSamples m = CorrectPass(machine, joints, options, *path, pass, &scale, report);
     if (report->violations_left == 0) break;
     std::vector<double> feed(n - 1);
     for (size_t i = 0; i + 1 < n; ++i) feed[i] = path->poses[i + 1].feed_mm_per_min * scale[i];
@@ -105,11 +150,17 @@ Status ScheduleFeed(const Machine& machine, const std::vector<JointVector>& join
       if (m.cutting[i]) path->poses[i + 1].feed_mm_per_min = feed[i];
     }
   }
+  if (options.mode == FeedMode::kRaise) {
+    RaiseFeeds(machine, joints, options, programmed, path, report);
+  }
   report->min_feed_mm_per_min = programmed[0];
+  report->max_feed_mm_per_min = programmed[0];
   for (size_t i = 1; i < n; ++i) {
     const double f = path->poses[i].feed_mm_per_min;
     report->moves_slowed += f < programmed[i] * (1 - 1e-9);
+    report->moves_raised += f > programmed[i] * (1 + 1e-9);
     report->min_feed_mm_per_min = std::min(report->min_feed_mm_per_min, f);
+    report->max_feed_mm_per_min = std::max(report->max_feed_mm_per_min, f);
   }
   return Status::Ok();
 }

@@ -11,10 +11,22 @@
 // 2, 3: velocity, acceleration and jerk grow as feed^k), then bounds the
 // ratio of neighbouring feeds by (1 + max_feed_step) both ways so that the
 // change of feed does not itself accelerate the axes; passes repeat until no
-// violation is left. Feeds are never raised above the programmed ones.
+// violation is left. In the default mode (kLower) feeds are never raised
+// above the programmed ones.
+//
+// kRaise turns smoothness into time: every feed move starts at its ceiling,
+// min(max_feed_mm_per_min, max_feed_factor * programmed feed), and the same
+// passes lower it where a limit needs; so each move ends at about the fastest
+// feed (within the margin) that keeps every axis's limits, or at its ceiling.
+// The neighbour bound holds from the first pass, so the raised program has
+// no feed jump above (1 + max_feed_step) between feed moves, even where the
+// program had one (an inverse-time program, whose every move takes the same
+// time, has one at every change of move length): a planner that keeps the
+// programmed feed otherwise accelerates at its limit at each such jump.
 #ifndef TPOPT_SOLVER_FEED_SCHEDULER_H_
 #define TPOPT_SOLVER_FEED_SCHEDULER_H_
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,7 +36,14 @@
 
 namespace tpopt {
 
+enum class FeedMode { kLower, kRaise };
+
 struct FeedScheduleOptions {
+  FeedMode mode = FeedMode::kLower;
+  // kRaise only: the ceilings of a feed move, mm/min (> 0; infinity: none)
+  // and as a factor of its programmed feed (>= 1).
+  double max_feed_mm_per_min = std::numeric_limits<double>::infinity();
+  double max_feed_factor = 2.0;
   // Each correction aims this fraction below the limit. (0, 1).
   double margin = 0.97;
   // Largest relative feed change between neighbouring moves. > 0.
@@ -38,8 +57,10 @@ struct FeedScheduleOptions {
 
 struct FeedScheduleReport {
   int passes = 0;
-  int moves_slowed = 0;
+  int moves_slowed = 0;  // below the programmed feed
+  int moves_raised = 0;  // above it (kRaise)
   double min_feed_mm_per_min = 0.0;
+  double max_feed_mm_per_min = 0.0;
   int violations_left = 0;  // 0 unless max_passes ran out
 };
 

@@ -156,6 +156,61 @@ TEST(TpoptCliTest, SmoothWritesPathAndSideBySideReport) {
   }
 }
 
+TEST(TpoptCliTest, RaisedFeedsShortenTheMachiningTimeWithinTheLimits) {
+  TempDir dir;
+  const std::string hypar = SourcePath("data/surfaces/hypar.json");
+  const std::string jcde = SourcePath("data/machines/jcde2022_ac.json");
+  const std::string cls = dir.File("hypar.cls");
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + hypar + " --cutter_radius=4 --poses=80 "
+                             "--out=" + cls)).exit_code,
+            0);
+  const std::string common = "smooth --mode=spline --in=" + cls + " --surface=" + hypar +
+                             " --machine=" + jcde + " --out=" + dir.File("out.cls");
+  const std::string report = dir.File("raise.json");
+  auto r = RunCommand(Tpopt(common + " --feed_mode=raise --max_feed_factor=2 --report=" + report));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("feed raised on"), std::string::npos) << r.output;
+  const nlohmann::json j = ReadJson(report);
+  EXPECT_GT(j["feed_schedule"]["moves_raised"].get<int>(), 0);
+  EXPECT_LE(j["feed_schedule"]["max_feed_mm_per_min"].get<double>(), 2000.0);
+  EXPECT_EQ(j["output"]["limit_violations"].get<int>(), 0);
+  EXPECT_LT(j["output"]["machining_time_s"].get<double>(),
+            j["output_at_input_feed"]["machining_time_s"].get<double>());
+  for (const std::string bad : {"--feed_mode=fast", "--feed_mode=raise --max_feed_factor=0.5",
+                                "--feed_mode=raise --max_feed_mm_per_min=-5"}) {
+    r = RunCommand(Tpopt(common + " " + bad + " --report=" + dir.File("bad.json")));
+    EXPECT_EQ(r.exit_code, 2) << bad << r.output;
+    EXPECT_FALSE(FileExists(dir.File("bad.json"))) << bad;
+  }
+}
+
+// --machine=*.ini reads LinuxCNC's sample INI as the same machine as the
+// hand-written JSON of it: the same report.
+TEST(TpoptCliTest, MachineFromALinuxCncIniEvaluatesAsItsJson) {
+  const std::string ini =
+      "/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/vismach/5axis/"
+      "table-rotary-tilting/xyzac-trt.ini";
+  if (!FileExists(ini)) GTEST_SKIP() << "LinuxCNC's sample configs are not installed";
+  TempDir dir;
+  const std::string cls = dir.File("cam.cls");
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + kBlade + " --cutter_radius=4 --poses=60 "
+                             "--axis_noise_deg=0.3 --out=" + cls)).exit_code,
+            0);
+  nlohmann::json reports[2];
+  const std::string machines[2] = {ini, kSim};
+  for (int k = 0; k < 2; ++k) {
+    const std::string report = dir.File("r" + std::to_string(k) + ".json");
+    const auto r = RunCommand(Tpopt("evaluate --in=" + cls + " --cutter_radius=4 --machine=" +
+                                    machines[k] + " --report=" + report));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    reports[k] = ReadJson(report);
+  }
+  EXPECT_GT(reports[0]["limit_violations"].get<int>(), 0);
+  EXPECT_EQ(reports[0]["limit_violations"], reports[1]["limit_violations"]);
+  EXPECT_EQ(reports[0]["machining_time_s"], reports[1]["machining_time_s"]);
+  EXPECT_EQ(reports[0]["C"]["peak_acceleration"], reports[1]["C"]["peak_acceleration"]);
+}
+
 TEST(TpoptCliTest, SmoothResamplesTheOutputAndReportsTheResampledPath) {
   TempDir dir;
   const std::string cam = dir.File("cam.cls"), out = dir.File("out.cls"), rep = dir.File("r.json");
