@@ -41,6 +41,7 @@ DECLARE_double(feed);
 // evaluate
 DECLARE_int32(samples_u);
 DECLARE_int32(samples_v);
+DECLARE_bool(whole_surface);
 
 
 

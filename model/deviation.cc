@@ -456,17 +456,12 @@ double SweptDistance::Least(const Eigen::Vector3d& q, int* hint) const {
 
 // The grid's u range: the options' or the contact u the cutting poses span.
 std::pair<double, double> GridRangeU(const RuledSurface& surface,
-                                     const ToolPath& path, const Motion& motion,
+                                     const ToolPath& path,
                                      const DeviationOptions& options) {
   if (!std::isnan(options.u_min)) return {options.u_min, options.u_max};
-  const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), path);
-  double lo = kInf, hi = -kInf;
-  for (int m = 0; m < motion.num_moves(); ++m) {
-    const int i = motion.start_pose(m);
-    lo = std::min({lo, u[i], u[i + 1]});
-    hi = std::max({hi, u[i], u[i + 1]});
-  }
-  return {lo, hi};
+  std::pair<double, double> range;
+  CoveredRangeU(surface, path, &range.first, &range.second);
+  return range;
 }
 
 void InitGrid(double u_lo, double u_hi, const DeviationOptions& o,
@@ -529,7 +524,7 @@ Status EvaluateOnGrid(const RuledSurface& surface, const Cutter& cutter,
   CHECK(report != nullptr);
   Status s = CheckInputs(cutter, motion, options);
   if (!s.ok()) return s;
-  const auto [u_lo, u_hi] = GridRangeU(surface, path, motion, options);
+  const auto [u_lo, u_hi] = GridRangeU(surface, path, options);
   DeviationReport out;
   InitGrid(u_lo, u_hi, options, &out);
   const size_t nv = out.v.size();
@@ -596,6 +591,21 @@ Status MakeMotion(const ToolPath& path, const Machine* machine,
 }
 
 }  // namespace
+
+bool CoveredRangeU(const RuledSurface& surface, const ToolPath& path,
+                   double* u_min, double* u_max) {
+  CHECK(u_min != nullptr && u_max != nullptr);
+  const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), path);
+  double lo = kInf, hi = -kInf;
+  for (size_t i = 0; i + 1 < path.poses.size(); ++i) {
+    if (path.poses[i + 1].rapid) continue;  // as Motion::FindMoves
+    lo = std::min({lo, u[i], u[i + 1]});
+    hi = std::max({hi, u[i], u[i + 1]});
+  }
+  *u_min = lo;
+  *u_max = hi;
+  return lo <= hi;
+}
 
 bool DeviationOptions::IsValid(std::string* why) const {
   std::ostringstream err;

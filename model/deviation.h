@@ -47,11 +47,13 @@ struct DeviationOptions {
   int samples_u = 200;
   int samples_v = 21;
   // The u range evaluated. NaN (default) for both means the range the path
-  // covers: the least and greatest contact u, on rail 0, of the poses that
-  // take part in a cutting move (the foot of each tip on rail 0, see
-  // model/rail_projection.h). Evaluating the whole [0, 1] would report the
-  // uncut ends of a partial path as undercut. Otherwise both finite with
-  // 0 <= u_min < u_max <= 1.
+  // under evaluation covers (CoveredRangeU). That is right for a program as
+  // it came in (evaluating the whole [0, 1] would report the uncut ends of
+  // a partial path as undercut) but never for a path derived from it: a
+  // smoothed path that retreats from the surface's ends must be charged for
+  // what it leaves, so it is judged on its input's range (RunSmoothing does
+  // so) or, by choice, on the whole surface, [0, 1]. Otherwise both finite
+  // with 0 <= u_min < u_max <= 1.
   double u_min = std::numeric_limits<double>::quiet_NaN();
   double u_max = std::numeric_limits<double>::quiet_NaN();
   // Coarse samples per move before the least distance is refined by Brent's
@@ -82,6 +84,13 @@ struct DeviationReport {
     return deviation_mm[iu * v.size() + iv];
   }
 };
+
+// The least and greatest contact u, on rail 0, of the poses that take part
+// in a cutting move of `path` (the foot of each tip on rail 0, see
+// model/rail_projection.h). False, leaving u_min > u_max, when the path has
+// no cutting move.
+bool CoveredRangeU(const RuledSurface& surface, const ToolPath& path,
+                   double* u_min, double* u_max);
 
 // Evaluates the deviation of `path` cut with `cutter` from `surface` on the
 // grid of `options`. `machine` may be null (tip linear, axis slerp, see

@@ -72,12 +72,19 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   auto stage = [&](const std::string& name) {
     if (settings.on_stage) settings.on_stage(name);
   };
+  // Every path is judged on one grid: the input's covered range (or the one
+  // asked for), never the range a smoothed path happens to cover.
+  DeviationOptions deviation = settings.deviation;
   auto evaluate = [&](const std::string& what, const ToolPath& path, PathMetrics* metrics) {
     stage("evaluating " + what);
-    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, settings.deviation,
+    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, deviation,
                         settings.motion, metrics);
   };
   Status s = evaluate("the input", *job.input, &result->input_metrics);
+  if (s.ok() && result->input_metrics.deviation) {
+    deviation.u_min = result->input_metrics.deviation->u.front();
+    deviation.u_max = result->input_metrics.deviation->u.back();
+  }
   if (s.ok()) s = WithinTravel(*job.machine, *job.input);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
 

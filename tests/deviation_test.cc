@@ -371,6 +371,54 @@ TEST(DeviationTest, MovesIntoARapidPoseDoNotCut) {
   EXPECT_EQ(report.undercut_u, 0.5);
 }
 
+// A path that stops short of the surface's end, judged on the range its
+// input covered, is charged for the material it leaves there; judged on its
+// own range it would look clean.
+TEST(DeviationTest, PathStoppingShortIsChargedOnTheInputsRange) {
+  const RuledSurface hypar = Hypar();
+  const Cutter cutter{4.0, 40.0, 0.0};
+  const ToolPath full = SpoPath(hypar, cutter, 41);
+  ToolPath short_path = full;
+  short_path.poses.resize(33);  // u = 0 .. 0.8
+  double lo = 0, hi = 0;
+  ASSERT_TRUE(CoveredRangeU(hypar, full, &lo, &hi));
+  EXPECT_NEAR(lo, 0.0, 1e-9);
+  EXPECT_NEAR(hi, 1.0, 1e-9);
+  double short_lo = 0, short_hi = 0;
+  ASSERT_TRUE(CoveredRangeU(hypar, short_path, &short_lo, &short_hi));
+  EXPECT_NEAR(short_hi, 0.8, 1e-6);
+  DeviationOptions own;
+  own.samples_u = 41;
+  own.samples_v = 5;
+  DeviationOptions input_range = own;
+  input_range.u_min = lo;
+  input_range.u_max = hi;
+  const Machine machine = SimMachine();
+  DeviationReport on_own, on_input, brute;
+  ASSERT_TRUE(EvaluateDeviation(hypar, cutter, short_path, &machine, own, &on_own).ok());
+  ASSERT_TRUE(
+      EvaluateDeviation(hypar, cutter, short_path, &machine, input_range, &on_input).ok());
+  ASSERT_TRUE(EvaluateDeviationBruteForce(hypar, cutter, short_path, &machine, input_range, 64,
+                                          &brute)
+                  .ok());
+  // The last pose's cutter at u = 0.8 is far from the u = 1 ruling: the
+  // distance from C1(1) to that static cutter bounds the grid's undercut
+  // from below (no other pose comes nearer: the path runs away from it).
+  const ToolPose& last = short_path.poses.back();
+  const double to_last_mm =
+      SignedDistanceToCutter<double>(cutter, hypar.Point(1.0, 0.0), last.p_w_tip, last.a_w);
+  EXPECT_GT(to_last_mm, 1.0);
+  EXPECT_LT(on_own.max_undercut_mm, 0.05);
+  EXPECT_DOUBLE_EQ(on_input.u.back(), 1.0);
+  EXPECT_GE(on_input.max_undercut_mm, to_last_mm - 1e-9);
+  EXPECT_NEAR(on_input.max_undercut_mm, brute.max_undercut_mm, 1e-3);
+  EXPECT_DOUBLE_EQ(on_input.undercut_u, 1.0);
+  // No cutting move: no range.
+  ToolPath one_pose = full;
+  one_pose.poses.resize(1);
+  EXPECT_FALSE(CoveredRangeU(hypar, one_pose, &lo, &hi));
+}
+
 TEST(DeviationTest, RejectsBadInput) {
   const RuledSurface hypar = Hypar();
   const Cutter cutter;
