@@ -7,9 +7,11 @@
 // material left).
 //
 // The motion between two consecutive poses i -> i+1 ("a move", s in [0, 1]):
-//  - with a machine, the controller interpolates its joints X, Y, Z, A, C
-//    linearly, so pose(s) = Machine::ToWorkpiece((1 - s) J_i + s J_i+1) with
-//    J from Machine::AssignJoints (DESIGN.md, "as the tool actually moves");
+//  - with a machine, as DeviationOptions::interpolation says
+//    (model/interpolation.h, DESIGN.md "as the tool actually moves"): the
+//    joints X, Y, Z, A, C linear, pose(s) = ToWorkpiece((1 - s) J_i +
+//    s J_i+1), or TCP, the tip linear in W and A, C linear in the joints,
+//    J from Machine::AssignJoints;
 //  - without one, the tip moves on the straight line and the axis turns on
 //    the great circle between the two axes (slerp), which is what a
 //    controller with tool-centre-point control and vector interpolation does.
@@ -33,6 +35,7 @@
 #include <vector>
 
 #include "model/cutter.h"
+#include "model/interpolation.h"
 #include "model/machine.h"
 #include "model/ruled_surface.h"
 #include "model/status.h"
@@ -62,6 +65,10 @@ struct DeviationOptions {
   // proportionally more (at most 4096). The samples also build each move's
   // bounding volume.
   int substeps = 8;
+  // The controller's motion between poses when there is a machine. The
+  // library keeps the joint model by default; the tpopt command picks TCP
+  // for APT and tcp-style G-code and joint for joint-style G-code.
+  Interpolation interpolation = Interpolation::kJoint;
 
   bool IsValid(std::string* why) const;
 };

@@ -72,8 +72,9 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   auto stage = [&](const std::string& name) {
     if (settings.on_stage) settings.on_stage(name);
   };
-  // Every path is judged on one grid: the input's covered range (or the one
-  // asked for), never the range a smoothed path happens to cover.
+  // With judge_on_input_range every path is judged on one grid: the
+  // input's covered range (or the one asked for), never the range a
+  // smoothed path happens to cover.
   DeviationOptions deviation = settings.deviation;
   auto evaluate = [&](const std::string& what, const ToolPath& path, PathMetrics* metrics) {
     stage("evaluating " + what);
@@ -81,7 +82,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                         settings.motion, metrics);
   };
   Status s = evaluate("the input", *job.input, &result->input_metrics);
-  if (s.ok() && result->input_metrics.deviation) {
+  if (s.ok() && result->input_metrics.deviation && settings.judge_on_input_range) {
     deviation.u_min = result->input_metrics.deviation->u.front();
     deviation.u_max = result->input_metrics.deviation->u.back();
   }
@@ -129,6 +130,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     // the exact swept envelope still leaves it, the solve runs again with
     // that unit halved, which weighs the surface more against smoothness.
     HighAccuracyOptions options = settings.high_accuracy;
+    options.interpolation = settings.deviation.interpolation;
     const bool held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
     for (int round = 0;; ++round) {
       stage(round == 0 ? "high_accuracy solve"

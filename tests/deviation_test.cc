@@ -63,6 +63,19 @@ ToolPath SpoPath(const RuledSurface& surface, const Cutter& cutter, int poses,
   return path;
 }
 
+// The hypar's SPO path (rulings vertical at u = 0.5) with its axes tilted
+// alternately by +-0.3 deg about y: C swings by up to ~70 deg between
+// neighbouring poses near the pole.
+ToolPath ZigZagThroughThePole(const RuledSurface& hypar, const Cutter& cutter) {
+  ToolPath path = SpoPath(hypar, cutter, 31);
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    const double tilt = (i % 2 == 0 ? 0.3 : -0.3) * kDeg;
+    path.poses[i].a_w =
+        Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitY()) * path.poses[i].a_w;
+  }
+  return path;
+}
+
 // Fast and brute force on the same grid agree to 1 um at every grid point
 // and at the extremes; refinement only ever lowers the sampled minimum.
 void ExpectAgreesWithBruteForce(const RuledSurface& surface,
@@ -154,12 +167,7 @@ TEST(DeviationTest, FollowsFastRotarySwingsNearThePole) {
   // pose that a few samples per move would step over.
   const RuledSurface hypar = Hypar();
   const Cutter cutter{4.0, 40.0, 0.0};
-  ToolPath path = SpoPath(hypar, cutter, 31);
-  for (size_t i = 0; i < path.poses.size(); ++i) {
-    const double tilt = (i % 2 == 0 ? 0.3 : -0.3) * kDeg;
-    path.poses[i].a_w =
-        Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitY()) * path.poses[i].a_w;
-  }
+  const ToolPath path = ZigZagThroughThePole(hypar, cutter);
   const Machine machine = SimMachine();
   std::vector<JointVector> joints;
   ASSERT_TRUE(machine.AssignJoints(path, &joints).ok());
@@ -190,6 +198,47 @@ TEST(DeviationTest, FollowsFastRotarySwingsNearThePole) {
     EXPECT_GE(fast.deviation_mm[k], brute.deviation_mm[k] - 2e-3)
         << "grid point " << k;
   }
+}
+
+// TCP motion through the pole: the fast evaluator agrees with brute force and
+// with an independent sampling of the closed form (tip linear in W, A and C
+// linear), and differs from the joint model there, where the table's swing
+// of C carries a joint-linear tip off its chord.
+TEST(DeviationTest, TcpMotionNearThePoleFollowsItsClosedForm) {
+  const RuledSurface hypar = Hypar();
+  const Cutter cutter{4.0, 40.0, 0.0};
+  const ToolPath path = ZigZagThroughThePole(hypar, cutter);
+  const Machine machine = SimMachine();
+  DeviationOptions options;
+  options.samples_u = 16;
+  options.samples_v = 4;
+  options.u_min = 0.4;
+  options.u_max = 0.6;
+  options.interpolation = Interpolation::kTcp;
+  ExpectAgreesWithBruteForce(hypar, path, &machine, options, 2000);
+  DeviationReport tcp, joint;
+  ASSERT_TRUE(EvaluateDeviation(hypar, cutter, path, &machine, options, &tcp).ok());
+  std::vector<JointVector> joints;
+  ASSERT_TRUE(machine.AssignJoints(path, &joints).ok());
+  const size_t nv = tcp.v.size();
+  for (size_t k = 0; k < tcp.deviation_mm.size(); k += 7) {
+    const Eigen::Vector3d q = hypar.Point(tcp.u[k / nv], tcp.v[k % nv]);
+    double least = 1e9;
+    for (size_t i = 0; i + 1 < path.poses.size(); ++i) {
+      for (int step = 0; step <= 400; ++step) {
+        const double s = step / 400.0;
+        const JointVector j = (1 - s) * joints[i] + s * joints[i + 1];
+        const Eigen::Vector3d tip = (1 - s) * path.poses[i].p_w_tip + s * path.poses[i + 1].p_w_tip;
+        least = std::min(least, SignedDistanceToCutter<double>(
+                                    cutter, q, tip, AnglesToAxis(j[kA], j[kC])));
+      }
+    }
+    EXPECT_LE(tcp.deviation_mm[k], least + 1e-9) << "grid point " << k;
+    EXPECT_NEAR(tcp.deviation_mm[k], least, 2e-3) << "grid point " << k;
+  }
+  options.interpolation = Interpolation::kJoint;
+  ASSERT_TRUE(EvaluateDeviation(hypar, cutter, path, &machine, options, &joint).ok());
+  EXPECT_GT(joint.max_overcut_mm, tcp.max_overcut_mm + 0.1);
 }
 
 TEST(DeviationTest, MachineMotionDiffersFromSlerpMotion) {

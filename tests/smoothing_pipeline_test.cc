@@ -8,10 +8,10 @@
 namespace tpopt {
 namespace {
 
-// The output is judged on the grid of the input's covered range, whatever
-// range the output itself covers (the high-accuracy solve of this path
-// starting at u = 0.25 moves both end contacts inwards by ~0.003 in u, so
-// a grid of the output's own range would differ), point by point.
+// With judge_on_input_range the output is judged on the grid of the
+// input's covered range, point by point, whatever range the output itself
+// covers: the high-accuracy solve of this path starting at u = 0.25 moves
+// both end contacts inwards by ~0.003 in u, so its own grid would differ.
 TEST(SmoothingPipelineTest, OutputIsJudgedOnTheInputsRange) {
   RuledSurface surface;
   Machine machine;
@@ -26,6 +26,7 @@ TEST(SmoothingPipelineTest, OutputIsJudgedOnTheInputsRange) {
   SmoothingSettings settings;
   settings.mode = SmoothingMode::kHighAccuracy;
   settings.accept_over_tolerance = true;
+  settings.judge_on_input_range = true;
   settings.deviation.samples_u = 30;
   settings.deviation.samples_v = 5;
   SmoothingResult result;

@@ -23,14 +23,20 @@ const std::string kBlade = SourcePath("data/surfaces/impeller_blade.json");
 const std::string kSim = SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
 
 
+// A clean DPO path of the shared blade with `poses` poses, written to `cls`.
+void GenerateBladeDpo(int poses, const std::string& cls) {
+  const auto r = RunCommand(Tpopt("generate --surface=" + kBlade + " --cutter_radius=4 --poses=" +
+                                  std::to_string(poses) + " --strategy=dpo --out=" + cls));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+}
+
 // evaluate judges a program on the range it covers; --whole_surface charges
 // a program that stops short for the rest of the surface.
 TEST(TpoptCliTest, WholeSurfaceChargesAPathThatStopsShort) {
   TempDir dir;
   const std::string cls = dir.File("p.cls"), part = dir.File("part.cls");
-  auto r = RunCommand(Tpopt("generate --surface=" + kBlade +
-                            " --cutter_radius=4 --poses=100 --strategy=dpo --out=" + cls));
-  ASSERT_EQ(r.exit_code, 0) << r.output;
+  GenerateBladeDpo(100, cls);
+  testing::CommandResult r;
   // The first 60 GOTOs of the program, everything else as it was.
   std::istringstream in(testing::ReadFileText(cls));
   std::ofstream out(part);
@@ -52,6 +58,25 @@ TEST(TpoptCliTest, WholeSurfaceChargesAPathThatStopsShort) {
   }
   EXPECT_LT(undercut_mm[0], 0.05);
   EXPECT_GT(undercut_mm[1], 1.0);
+}
+
+// The report names the interpolation model: TCP for APT by default, the
+// flag's otherwise; a model that does not exist is a usage error.
+TEST(TpoptCliTest, InterpolationFlagReachesTheReport) {
+  TempDir dir;
+  const std::string cls = dir.File("p.cls"), report = dir.File("r.json");
+  GenerateBladeDpo(40, cls);
+  testing::CommandResult r;
+  for (const std::string model : {"", "tcp", "joint"}) {
+    r = RunCommand(Tpopt("evaluate --in=" + cls + " --surface=" + kBlade + " --machine=" + kSim +
+                         " --samples_u=20 --report=" + report +
+                         (model.empty() ? "" : " --interpolation=" + model)));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(ReadJson(report)["interpolation"], model.empty() ? "tcp" : model);
+  }
+  r = RunCommand(Tpopt("evaluate --in=" + cls + " --report=" + report + " --interpolation=spline"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--interpolation=spline"), std::string::npos) << r.output;
 }
 
 TEST(TpoptCliTest, GenerateThenEvaluateWritesASaneReport) {
