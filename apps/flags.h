@@ -42,6 +42,7 @@ DECLARE_double(feed);
 DECLARE_int32(samples_u);
 DECLARE_int32(samples_v);
 DECLARE_bool(whole_surface);
+DECLARE_bool(judge_on_input_range);
 DECLARE_string(interpolation);
 
 

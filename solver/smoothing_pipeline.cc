@@ -1,6 +1,7 @@
 #include "solver/smoothing_pipeline.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <glog/logging.h>
@@ -82,9 +83,11 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                         settings.motion, metrics);
   };
   Status s = evaluate("the input", *job.input, &result->input_metrics);
-  if (s.ok() && result->input_metrics.deviation && settings.judge_on_input_range) {
-    deviation.u_min = result->input_metrics.deviation->u.front();
-    deviation.u_max = result->input_metrics.deviation->u.back();
+  // (The range itself, not the grid's ends: u_min + (u_max - u_min) i / n
+  // can round past 1 at the last point.)
+  if (s.ok() && job.surface != nullptr && settings.judge_on_input_range &&
+      std::isnan(deviation.u_min)) {
+    CoveredRangeU(*job.surface, *job.input, &deviation.u_min, &deviation.u_max);
   }
   if (s.ok()) s = WithinTravel(*job.machine, *job.input);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);

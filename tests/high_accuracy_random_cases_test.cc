@@ -31,14 +31,8 @@ constexpr int kPoses = 40;
 constexpr int kSamplesU = 60, kSamplesV = 7, kBruteSubsteps = 40;
 
 const std::vector<Machine>& SharedMachines() {
-  static const std::vector<Machine>* machines = [] {
-    auto* m = new std::vector<Machine>(2);
-    CHECK(ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &(*m)[0]).ok());
-    CHECK(ReadMachineJson(testing::SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json"),
-                          &(*m)[1])
-              .ok());
-    return m;
-  }();
+  static const std::vector<Machine>* machines =
+      new std::vector<Machine>(testing::SharedMachines());
   return *machines;
 }
 
@@ -82,9 +76,7 @@ TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
   settings.deviation.interpolation = Interpolation::kTcp;
   settings.judge_on_input_range = true;
   SmoothingResult result;
-  SmoothingFailure failure;
-  const Status s =
-      RunSmoothing({&c.cam_path, &c.surface, &c.cutter, &c.machine}, settings, &result, &failure);
+  const Status s = testing::SmoothRandomCase(c, settings, &result);
   ASSERT_TRUE(s.ok()) << s.message();
 
   double u_min = 0, u_max = 0;

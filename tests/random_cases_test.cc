@@ -14,25 +14,12 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-std::vector<Machine> SharedMachines() {
-  std::vector<Machine> machines(2);
-  EXPECT_TRUE(
-      ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"),
-                      &machines[0])
-          .ok());
-  EXPECT_TRUE(ReadMachineJson(testing::SourcePath(
-                                  "data/machines/linuxcnc_xyzac_trt_sim.json"),
-                              &machines[1])
-                  .ok());
-  return machines;
-}
-
 double AngleRad(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::atan2(a.cross(b).norm(), a.dot(b));
 }
 
 TEST(RandomCasesTest, SameSeedSameCaseOtherSeedOtherCase) {
-  const std::vector<Machine> machines = SharedMachines();
+  const std::vector<Machine> machines = testing::SharedMachines();
   RandomCase a, b, c;
   ASSERT_TRUE(MakeRandomCase(7, RandomCaseOptions(), machines, &a).ok());
   ASSERT_TRUE(MakeRandomCase(7, RandomCaseOptions(), machines, &b).ok());
@@ -50,7 +37,7 @@ TEST(RandomCasesTest, BadOptionsAreRefused) {
   RandomCaseOptions o;
   o.poses = 3;
   RandomCase c;
-  const Status s = MakeRandomCase(1, o, SharedMachines(), &c);
+  const Status s = MakeRandomCase(1, o, testing::SharedMachines(), &c);
   EXPECT_FALSE(s.ok());
   EXPECT_NE(s.message().find("poses 3"), std::string::npos) << s.message();
 }
@@ -58,7 +45,7 @@ TEST(RandomCasesTest, BadOptionsAreRefused) {
 // The drawn parameters stay in the ranges and, over 60 seeds, cover
 // every rail degree, both sides, both machines, pole and non-pole cases.
 TEST(RandomCasesTest, ParametersSpanTheRanges) {
-  const std::vector<Machine> machines = SharedMachines();
+  const std::vector<Machine> machines = testing::SharedMachines();
   std::set<int> degrees;
   std::set<std::string> machine_names;
   std::set<CutterSide> sides;
@@ -111,7 +98,7 @@ TEST(RandomCasesTest, ParametersSpanTheRanges) {
 // bound + the bump's swing of the true ruling; lead poses lie beyond the
 // surface's ends; 1 um steps exist where drawn.
 TEST(RandomCasesTest, CamPathFollowsItsConvention) {
-  const std::vector<Machine> machines = SharedMachines();
+  const std::vector<Machine> machines = testing::SharedMachines();
   for (unsigned seed = 1; seed <= 30; ++seed) {
     RandomCase c;
     ASSERT_TRUE(MakeRandomCase(seed, RandomCaseOptions(), machines, &c).ok());
@@ -168,7 +155,7 @@ TEST(RandomCasesTest, CamPathFollowsItsConvention) {
 // A near-pole case has some ruling within its pole offset of +Z (to the
 // half degree the bow of the rail adds).
 TEST(RandomCasesTest, NearPoleCasesPassNearThePole) {
-  const std::vector<Machine> machines = SharedMachines();
+  const std::vector<Machine> machines = testing::SharedMachines();
   int checked = 0;
   for (unsigned seed = 1; seed <= 40; ++seed) {
     RandomCase c;
@@ -194,7 +181,7 @@ TEST(RandomCasesTest, NearPoleCasesPassNearThePole) {
 // surface: the SPO tip is R off rail 0 along the normal, with no bump or
 // noise, and the DPO axis is a unit vector; both carry the case's cutter.
 TEST(RandomCasesTest, ReferencesAreCleanOffsets) {
-  const std::vector<Machine> machines = SharedMachines();
+  const std::vector<Machine> machines = testing::SharedMachines();
   for (unsigned seed = 1; seed <= 10; ++seed) {
     RandomCase c;
     ASSERT_TRUE(MakeRandomCase(seed, RandomCaseOptions(), machines, &c).ok());

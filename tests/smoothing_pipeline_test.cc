@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "model/path_generator.h"
+#include "model/random_cases.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -42,6 +43,28 @@ TEST(SmoothingPipelineTest, OutputIsJudgedOnTheInputsRange) {
     EXPECT_EQ(m->deviation->u, in.u);
     EXPECT_EQ(m->deviation->v, in.v);
   }
+}
+
+// Random case 176 covers u from 0.0032 to 1, where the input's grid's last
+// point u_min + (1 - u_min) (n - 1) / (n - 1) rounds past 1: the output is
+// judged on the range itself, not on the grid's end values.
+TEST(SmoothingPipelineTest, InputRangeEndingAtOneIsAValidRange) {
+  RandomCaseOptions options;
+  options.poses = 40;
+  RandomCase c;
+  ASSERT_TRUE(MakeRandomCase(176, options, testing::SharedMachines(), &c).ok());
+  double u_min = 0, u_max = 0;
+  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
+  ASSERT_GT(u_min, 0.0);
+  ASSERT_EQ(u_max, 1.0);
+  SmoothingSettings settings;
+  settings.mode = SmoothingMode::kSpline;
+  settings.judge_on_input_range = true;
+  SmoothingResult result;
+  const Status s = testing::SmoothRandomCase(c, settings, &result);
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_EQ(result.output_metrics.deviation->u.size(), result.input_metrics.deviation->u.size());
+  EXPECT_NEAR(result.output_metrics.deviation->u.back(), 1.0, 1e-12);
 }
 
 }  // namespace
