@@ -45,6 +45,9 @@ DECLARE_double(feed);
 // evaluate
 DECLARE_int32(samples_u);
 DECLARE_int32(samples_v);
+DECLARE_bool(whole_surface);
+DECLARE_bool(judge_on_input_range);
+DECLARE_string(interpolation);
 
 
 

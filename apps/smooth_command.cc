@@ -42,7 +42,8 @@ void ReportProgressTo(ProgressDisplay* progress, SmoothingSettings* settings) {
 // Writes the path as `written` (the result, or points on its fitted
 // B-spline `spans`), the report and the pictures of the result.
 Status WriteOutputs(const Invocation& invocation, const Job& job, const SmoothingResult& result,
-                    const ToolPath& written, const std::vector<AptCurveSpan>& spans) {
+                    Interpolation interpolation, const ToolPath& written,
+                    const std::vector<AptCurveSpan>& spans) {
   Status s = SaveToolPath(FLAGS_out, job.machine, written, spans);
   if (s.ok() && !FLAGS_report.empty()) {
     nlohmann::json report = SmoothReportJson(invocation, FLAGS_mode, result);
@@ -51,6 +52,7 @@ Status WriteOutputs(const Invocation& invocation, const Job& job, const Smoothin
       report["controller"] =
           ControllerRunJson(*job.controller, result.output_metrics.motion.machining_time_s);
     }
+    report["interpolation"] = InterpolationName(interpolation);
     s = WriteReport(FLAGS_report, report);
   }
   if (s.ok()) {
@@ -108,6 +110,7 @@ int RunSmooth(const Invocation& invocation) {
   settings.mode = FLAGS_mode == "spline" ? SmoothingMode::kSpline : SmoothingMode::kHighAccuracy;
   settings.schedule_feed = FLAGS_schedule_feed;
   settings.accept_over_tolerance = FLAGS_accept_over_tolerance;
+  settings.judge_on_input_range = FLAGS_judge_on_input_range;
   settings.resample_step_mm = FLAGS_resample_step_mm;
   settings.feed.default_feed_mm_per_min = FLAGS_feed;
   if (s.ok() && FLAGS_feed_mode != "lower" && FLAGS_feed_mode != "raise") {
@@ -124,6 +127,9 @@ int RunSmooth(const Invocation& invocation) {
     s = Status::Error("--max_feed_mm_per_min, --max_feed_factor, --max_feed_step: " + feed_why);
   }
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
+  if (s.ok()) {
+    s = InterpolationFromFlags(FLAGS_out, FLAGS_gcode_style, &settings.deviation.interpolation);
+  }
   LinkMoveOptions links;
   if (s.ok()) s = LinkMoveOptionsFromFlags(&links);
   if (s.ok()) s = SmootherOptionsFromFlags(&settings.spline, &settings.high_accuracy);
@@ -163,7 +169,7 @@ int RunSmooth(const Invocation& invocation) {
     s = FitToolPathCurves(result.output, curve_options, &written, &spans);
     if (!s.ok()) return Fail(kExitBadInput, FLAGS_out + ": the B-spline fit failed: " + s.message());
   }
-  s = WriteOutputs(invocation, job, result, written, spans);
+  s = WriteOutputs(invocation, job, result, settings.deviation.interpolation, written, spans);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   if (!FLAGS_quiet) {
     PrintSummary(settings, result);

@@ -148,7 +148,7 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
                         double length_mm, const std::vector<bool>& free_pose,
                         SmoothingState* state, ceres::Problem* problem) {
   DeviationCost::Settings settings{*in.cutter, in.machine->kinematics, o.tolerance_mm,
-                                   o.overcut_factor};
+                                   o.overcut_factor, o.interpolation};
   const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
   const int m = o.ruling_samples;

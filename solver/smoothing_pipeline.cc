@@ -1,6 +1,7 @@
 #include "solver/smoothing_pipeline.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <glog/logging.h>
@@ -72,12 +73,22 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   auto stage = [&](const std::string& name) {
     if (settings.on_stage) settings.on_stage(name);
   };
+  // With judge_on_input_range every path is judged on one grid: the
+  // input's covered range (or the one asked for), never the range a
+  // smoothed path happens to cover.
+  DeviationOptions deviation = settings.deviation;
   auto evaluate = [&](const std::string& what, const ToolPath& path, PathMetrics* metrics) {
     stage("evaluating " + what);
-    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, settings.deviation,
+    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, deviation,
                         settings.motion, metrics);
   };
   Status s = evaluate("the input", *job.input, &result->input_metrics);
+  // (The range itself, not the grid's ends: u_min + (u_max - u_min) i / n
+  // can round past 1 at the last point.)
+  if (s.ok() && job.surface != nullptr && settings.judge_on_input_range &&
+      std::isnan(deviation.u_min)) {
+    CoveredRangeU(*job.surface, *job.input, &deviation.u_min, &deviation.u_max);
+  }
   if (s.ok()) s = WithinTravel(*job.machine, *job.input);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
 
@@ -122,6 +133,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     // the exact swept envelope still leaves it, the solve runs again with
     // that unit halved, which weighs the surface more against smoothness.
     HighAccuracyOptions options = settings.high_accuracy;
+    options.interpolation = settings.deviation.interpolation;
     const bool held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
     for (int round = 0;; ++round) {
       stage(round == 0 ? "high_accuracy solve"

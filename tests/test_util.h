@@ -19,6 +19,8 @@
 #include <nlohmann/json.hpp>
 
 #include "model/json_io.h"
+#include "model/random_cases.h"
+#include "solver/smoothing_pipeline.h"
 
 namespace tpopt::testing {
 
@@ -120,6 +122,24 @@ inline void LoadImpellerBench(RuledSurface* surface, Machine* machine) {
 inline void LoadHyparBench(RuledSurface* surface, Machine* machine) {
   ASSERT_TRUE(ReadSurfaceJson(SourcePath("data/surfaces/hypar.json"), surface).ok());
   ASSERT_TRUE(ReadMachineJson(SourcePath("data/machines/jcde2022_ac.json"), machine).ok());
+}
+
+// The two shared machines, data/machines/jcde2022_ac.json and
+// linuxcnc_xyzac_trt_sim.json, as the random cases draw them.
+inline std::vector<Machine> SharedMachines() {
+  std::vector<Machine> machines(2);
+  EXPECT_TRUE(ReadMachineJson(SourcePath("data/machines/jcde2022_ac.json"), &machines[0]).ok());
+  EXPECT_TRUE(
+      ReadMachineJson(SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json"), &machines[1]).ok());
+  return machines;
+}
+
+// Runs the smoothing pipeline on random case `c`'s CAM path.
+inline Status SmoothRandomCase(const RandomCase& c, const SmoothingSettings& settings,
+                               SmoothingResult* result) {
+  SmoothingFailure failure;
+  return RunSmoothing({&c.cam_path, &c.surface, &c.cutter, &c.machine}, settings, result,
+                      &failure);
 }
 
 }  // namespace tpopt::testing
