@@ -23,6 +23,9 @@ int RunEvaluate(const Invocation& invocation) {
   DeviationOptions deviation_options;
   MotionOptions motion_options;
   if (s.ok()) s = MetricOptionsFromFlags(&deviation_options, &motion_options);
+  if (s.ok()) {
+    s = InterpolationFromFlags(FLAGS_in, FLAGS_gcode_in_style, &deviation_options.interpolation);
+  }
   LinkMoveOptions links;
   if (s.ok()) s = LinkMoveOptionsFromFlags(&links);
   if (!s.ok()) {
@@ -53,6 +56,7 @@ int RunEvaluate(const Invocation& invocation) {
   report["machine"] = job.machine.name;
   report["cutter"] = {{"radius_mm", job.cutter.radius_mm},
                       {"flute_length_mm", job.cutter.flute_length_mm}};
+  report["interpolation"] = InterpolationName(deviation_options.interpolation);
   report["poses_in"] = metrics.poses;
   report["poses_out"] = metrics.poses;
   report["solve_time_s"] = 0.0;

@@ -47,6 +47,14 @@ DEFINE_double(feed, 1000.0, "Programmed feed, mm/min (generate; default where a 
 
 DEFINE_int32(samples_u, 200, "Deviation grid: samples along u.");
 DEFINE_int32(samples_v, 21, "Deviation grid: samples along each ruling (v).");
+DEFINE_string(interpolation, "",
+              "evaluate/smooth: how the controller moves between blocks, for the deviation and "
+              "the high_accuracy cost: tcp (tip linear in the workpiece, A and C linear) or joint "
+              "(X Y Z A C linear). Empty: joint for joint-style G-code (the input's for "
+              "evaluate, the output's for smooth), else tcp.");
+DEFINE_bool(whole_surface, false,
+            "Deviation grid over the whole surface (u in [0, 1]) instead of the u range the "
+            "input covers; smooth judges its output on the same range as the input.");
 
 DEFINE_string(mode, "high_accuracy",
               "smooth: spline (the seed's plain cubic-spline method, fast) or high_accuracy "

@@ -41,6 +41,8 @@ DECLARE_double(feed);
 // evaluate
 DECLARE_int32(samples_u);
 DECLARE_int32(samples_v);
+DECLARE_bool(whole_surface);
+DECLARE_string(interpolation);
 
 
 

@@ -75,6 +75,17 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
   return WriteGcode(path, tool_path, machine, options);
 }
 
+Status InterpolationFromFlags(const std::string& path, const std::string& gcode_style,
+                              Interpolation* interpolation) {
+  if (FLAGS_interpolation.empty()) {
+    const bool joint_gcode = IsGcode(Extension(path)) && StyleOf(gcode_style) == GcodeStyle::kJoint;
+    *interpolation = joint_gcode ? Interpolation::kJoint : Interpolation::kTcp;
+    return Status::Ok();
+  }
+  if (ParseInterpolation(FLAGS_interpolation, interpolation)) return Status::Ok();
+  return Status::Error("--interpolation=" + FLAGS_interpolation + " must be tcp or joint");
+}
+
 Status LoadMachine(const std::string& path, Machine* machine) {
   if (path.empty()) {
     *machine = Machine();

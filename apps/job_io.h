@@ -9,6 +9,7 @@
 
 #include "model/apt_io.h"
 #include "model/cutter.h"
+#include "model/interpolation.h"
 #include "model/link_moves.h"
 #include "model/machine.h"
 #include "model/ruled_surface.h"
@@ -53,6 +54,13 @@ struct Job {
 // Loads a Job from the flags, its links marked by `links`; errors name the
 // file at fault.
 Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job);
+
+// --interpolation, or without it the model of the program `path` written
+// or read in G-code style `gcode_style` ("tcp" or "joint"): joint for
+// joint-style G-code, TCP for tcp-style G-code and for APT. Fails (usage)
+// for another --interpolation.
+Status InterpolationFromFlags(const std::string& path, const std::string& gcode_style,
+                              Interpolation* interpolation);
 
 // Fails (usage) when --gcode_style or --gcode_in_style is not tcp or joint.
 Status CheckGcodeFlags();

@@ -9,6 +9,10 @@ namespace tpopt {
 Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion) {
   deviation->samples_u = FLAGS_samples_u;
   deviation->samples_v = FLAGS_samples_v;
+  if (FLAGS_whole_surface) {
+    deviation->u_min = 0.0;
+    deviation->u_max = 1.0;
+  }
   motion->default_feed_mm_per_min = FLAGS_feed;
   std::string why;
   if (!deviation->IsValid(&why) || !motion->IsValid(&why)) return Status::Error(why);

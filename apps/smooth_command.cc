@@ -41,10 +41,13 @@ void ReportProgressTo(ProgressDisplay* progress, SmoothingSettings* settings) {
 // Writes the path as `written` (the result, or points on its fitted
 // B-spline `spans`), the report and the pictures of the result.
 Status WriteOutputs(const Invocation& invocation, const Job& job, const SmoothingResult& result,
-                    const ToolPath& written, const std::vector<AptCurveSpan>& spans) {
+                    Interpolation interpolation, const ToolPath& written,
+                    const std::vector<AptCurveSpan>& spans) {
   Status s = SaveToolPath(FLAGS_out, job.machine, written, spans);
   if (s.ok() && !FLAGS_report.empty()) {
-    s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));
+    nlohmann::json report = SmoothReportJson(invocation, FLAGS_mode, result);
+    report["interpolation"] = InterpolationName(interpolation);
+    s = WriteReport(FLAGS_report, report);
   }
   if (s.ok()) {
     s = WritePictures("tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in,
@@ -101,6 +104,9 @@ int RunSmooth(const Invocation& invocation) {
   settings.resample_step_mm = FLAGS_resample_step_mm;
   settings.feed.default_feed_mm_per_min = FLAGS_feed;
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
+  if (s.ok()) {
+    s = InterpolationFromFlags(FLAGS_out, FLAGS_gcode_style, &settings.deviation.interpolation);
+  }
   LinkMoveOptions links;
   if (s.ok()) s = LinkMoveOptionsFromFlags(&links);
   if (s.ok()) s = SmootherOptionsFromFlags(FLAGS_surface.empty(), &settings.spline,
@@ -141,7 +147,7 @@ int RunSmooth(const Invocation& invocation) {
     s = FitToolPathCurves(result.output, curve_options, &written, &spans);
     if (!s.ok()) return Fail(kExitBadInput, FLAGS_out + ": the B-spline fit failed: " + s.message());
   }
-  s = WriteOutputs(invocation, job, result, written, spans);
+  s = WriteOutputs(invocation, job, result, settings.deviation.interpolation, written, spans);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   if (!FLAGS_quiet) {
     PrintSummary(settings, result);

@@ -29,8 +29,9 @@ class Motion {
  public:
   // Joint interpolation on `machine`; `joints` one per pose.
   Motion(const ToolPath& path, const Machine& machine,
-         const std::vector<JointVector>& joints)
-      : path_(&path), machine_(&machine), joints_(&joints) {
+         const std::vector<JointVector>& joints, Interpolation interpolation)
+      : path_(&path), machine_(&machine), joints_(&joints),
+        interpolation_(interpolation) {
     CHECK_EQ(joints.size(), path.poses.size());
     FindMoves();
   }
@@ -59,6 +60,7 @@ class Motion {
   const ToolPath* path_;
   const Machine* machine_ = nullptr;
   const std::vector<JointVector>* joints_ = nullptr;
+  Interpolation interpolation_ = Interpolation::kJoint;
   std::vector<int> moves_;
   std::vector<double> turn_rad_;  // slerp only: angle between the axes
 };
@@ -94,13 +96,13 @@ Status Motion::PrepareSlerp() {
 void Motion::PoseAt(int move, double s, Eigen::Vector3d* tip,
                     Eigen::Vector3d* axis) const {
   const int i = moves_[move];
-  if (machine_ != nullptr) {
-    const JointVector j = (1.0 - s) * (*joints_)[i] + s * (*joints_)[i + 1];
-    machine_->ToWorkpiece(j, tip, axis);
-    return;
-  }
   const ToolPose& p0 = path_->poses[i];
   const ToolPose& p1 = path_->poses[i + 1];
+  if (machine_ != nullptr) {
+    InterpolateMove<double>(machine_->kinematics, interpolation_, (*joints_)[i],
+                            (*joints_)[i + 1], p0.p_w_tip, p1.p_w_tip, s, tip, axis);
+    return;
+  }
   *tip = (1.0 - s) * p0.p_w_tip + s * p1.p_w_tip;
   const double theta = turn_rad_[move];
   if (theta < 1e-9) {
@@ -456,17 +458,12 @@ double SweptDistance::Least(const Eigen::Vector3d& q, int* hint) const {
 
 // The grid's u range: the options' or the contact u the cutting poses span.
 std::pair<double, double> GridRangeU(const RuledSurface& surface,
-                                     const ToolPath& path, const Motion& motion,
+                                     const ToolPath& path,
                                      const DeviationOptions& options) {
   if (!std::isnan(options.u_min)) return {options.u_min, options.u_max};
-  const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), path);
-  double lo = kInf, hi = -kInf;
-  for (int m = 0; m < motion.num_moves(); ++m) {
-    const int i = motion.start_pose(m);
-    lo = std::min({lo, u[i], u[i + 1]});
-    hi = std::max({hi, u[i], u[i + 1]});
-  }
-  return {lo, hi};
+  std::pair<double, double> range;
+  CoveredRangeU(surface, path, &range.first, &range.second);
+  return range;
 }
 
 void InitGrid(double u_lo, double u_hi, const DeviationOptions& o,
@@ -529,7 +526,7 @@ Status EvaluateOnGrid(const RuledSurface& surface, const Cutter& cutter,
   CHECK(report != nullptr);
   Status s = CheckInputs(cutter, motion, options);
   if (!s.ok()) return s;
-  const auto [u_lo, u_hi] = GridRangeU(surface, path, motion, options);
+  const auto [u_lo, u_hi] = GridRangeU(surface, path, options);
   DeviationReport out;
   InitGrid(u_lo, u_hi, options, &out);
   const size_t nv = out.v.size();
@@ -583,7 +580,7 @@ Status EvaluateBrute(const RuledSurface& surface, const Cutter& cutter,
 // Builds the motion for an optional machine: joints from AssignJoints, or
 // the slerp motion checked for bad axes.
 Status MakeMotion(const ToolPath& path, const Machine* machine,
-                  std::vector<JointVector>* joints,
+                  Interpolation interpolation, std::vector<JointVector>* joints,
                   std::unique_ptr<Motion>* out) {
   if (machine == nullptr) {
     *out = std::make_unique<Motion>(path);
@@ -591,11 +588,26 @@ Status MakeMotion(const ToolPath& path, const Machine* machine,
   }
   Status s = machine->AssignJoints(path, joints);
   if (!s.ok()) return s;
-  *out = std::make_unique<Motion>(path, *machine, *joints);
+  *out = std::make_unique<Motion>(path, *machine, *joints, interpolation);
   return Status::Ok();
 }
 
 }  // namespace
+
+bool CoveredRangeU(const RuledSurface& surface, const ToolPath& path,
+                   double* u_min, double* u_max) {
+  CHECK(u_min != nullptr && u_max != nullptr);
+  const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), path);
+  double lo = kInf, hi = -kInf;
+  for (size_t i = 0; i + 1 < path.poses.size(); ++i) {
+    if (path.poses[i + 1].rapid) continue;  // as Motion::FindMoves
+    lo = std::min({lo, u[i], u[i + 1]});
+    hi = std::max({hi, u[i], u[i + 1]});
+  }
+  *u_min = lo;
+  *u_max = hi;
+  return lo <= hi;
+}
 
 bool DeviationOptions::IsValid(std::string* why) const {
   std::ostringstream err;
@@ -621,7 +633,7 @@ Status EvaluateDeviation(const RuledSurface& surface, const Cutter& cutter,
                          DeviationReport* report) {
   std::vector<JointVector> joints;
   std::unique_ptr<Motion> motion;
-  Status s = MakeMotion(path, machine, &joints, &motion);
+  Status s = MakeMotion(path, machine, options.interpolation, &joints, &motion);
   if (!s.ok()) return s;
   return EvaluateFast(surface, cutter, path, *motion, options, report);
 }
@@ -631,7 +643,7 @@ Status EvaluateDeviation(const RuledSurface& surface, const Cutter& cutter,
                          const std::vector<JointVector>& joints,
                          const DeviationOptions& options,
                          DeviationReport* report) {
-  const Motion motion(path, machine, joints);
+  const Motion motion(path, machine, joints, options.interpolation);
   return EvaluateFast(surface, cutter, path, motion, options, report);
 }
 
@@ -643,7 +655,7 @@ Status EvaluateDeviationBruteForce(const RuledSurface& surface,
                                    DeviationReport* report) {
   std::vector<JointVector> joints;
   std::unique_ptr<Motion> motion;
-  Status s = MakeMotion(path, machine, &joints, &motion);
+  Status s = MakeMotion(path, machine, options.interpolation, &joints, &motion);
   if (!s.ok()) return s;
   return EvaluateBrute(surface, cutter, path, *motion, options,
                        substeps_per_move, report);
@@ -656,7 +668,7 @@ Status EvaluateDeviationBruteForce(const RuledSurface& surface,
                                    const DeviationOptions& options,
                                    int substeps_per_move,
                                    DeviationReport* report) {
-  const Motion motion(path, machine, joints);
+  const Motion motion(path, machine, joints, options.interpolation);
   return EvaluateBrute(surface, cutter, path, motion, options,
                        substeps_per_move, report);
 }

@@ -7,9 +7,11 @@
 // material left).
 //
 // The motion between two consecutive poses i -> i+1 ("a move", s in [0, 1]):
-//  - with a machine, the controller interpolates its joints X, Y, Z, A, C
-//    linearly, so pose(s) = Machine::ToWorkpiece((1 - s) J_i + s J_i+1) with
-//    J from Machine::AssignJoints (DESIGN.md, "as the tool actually moves");
+//  - with a machine, as DeviationOptions::interpolation says
+//    (model/interpolation.h, DESIGN.md "as the tool actually moves"): the
+//    joints X, Y, Z, A, C linear, pose(s) = ToWorkpiece((1 - s) J_i +
+//    s J_i+1), or TCP, the tip linear in W and A, C linear in the joints,
+//    J from Machine::AssignJoints;
 //  - without one, the tip moves on the straight line and the axis turns on
 //    the great circle between the two axes (slerp), which is what a
 //    controller with tool-centre-point control and vector interpolation does.
@@ -33,6 +35,7 @@
 #include <vector>
 
 #include "model/cutter.h"
+#include "model/interpolation.h"
 #include "model/machine.h"
 #include "model/ruled_surface.h"
 #include "model/status.h"
@@ -47,11 +50,13 @@ struct DeviationOptions {
   int samples_u = 200;
   int samples_v = 21;
   // The u range evaluated. NaN (default) for both means the range the path
-  // covers: the least and greatest contact u, on rail 0, of the poses that
-  // take part in a cutting move (the foot of each tip on rail 0, see
-  // model/rail_projection.h). Evaluating the whole [0, 1] would report the
-  // uncut ends of a partial path as undercut. Otherwise both finite with
-  // 0 <= u_min < u_max <= 1.
+  // under evaluation covers (CoveredRangeU). That is right for a program as
+  // it came in (evaluating the whole [0, 1] would report the uncut ends of
+  // a partial path as undercut) but never for a path derived from it: a
+  // smoothed path that retreats from the surface's ends must be charged for
+  // what it leaves, so it is judged on its input's range (RunSmoothing does
+  // so) or, by choice, on the whole surface, [0, 1]. Otherwise both finite
+  // with 0 <= u_min < u_max <= 1.
   double u_min = std::numeric_limits<double>::quiet_NaN();
   double u_max = std::numeric_limits<double>::quiet_NaN();
   // Coarse samples per move before the least distance is refined by Brent's
@@ -60,6 +65,10 @@ struct DeviationOptions {
   // proportionally more (at most 4096). The samples also build each move's
   // bounding volume.
   int substeps = 8;
+  // The controller's motion between poses when there is a machine. The
+  // library keeps the joint model by default; the tpopt command picks TCP
+  // for APT and tcp-style G-code and joint for joint-style G-code.
+  Interpolation interpolation = Interpolation::kJoint;
 
   bool IsValid(std::string* why) const;
 };
@@ -82,6 +91,13 @@ struct DeviationReport {
     return deviation_mm[iu * v.size() + iv];
   }
 };
+
+// The least and greatest contact u, on rail 0, of the poses that take part
+// in a cutting move of `path` (the foot of each tip on rail 0, see
+// model/rail_projection.h). False, leaving u_min > u_max, when the path has
+// no cutting move.
+bool CoveredRangeU(const RuledSurface& surface, const ToolPath& path,
+                   double* u_min, double* u_max);
 
 // Evaluates the deviation of `path` cut with `cutter` from `surface` on the
 // grid of `options`. `machine` may be null (tip linear, axis slerp, see

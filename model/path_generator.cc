@@ -52,6 +52,8 @@ bool FlankPathOptions::IsValid(std::string* why) const {
     err << "axis noise " << axis_noise_deg << " deg must be in [0, 45)";
   } else if (!(std::isfinite(flute_length_mm) && flute_length_mm >= 0)) {
     err << "flute length " << flute_length_mm << " mm must be >= 0";
+  } else if (!(taper_rad >= 0 && taper_rad < M_PI / 4)) {
+    err << "taper " << taper_rad << " rad must be in [0, pi/4)";
   } else {
     return true;
   }
@@ -92,10 +94,27 @@ Status GenerateFlankPath(const RuledSurface& surface, const FlankPathOptions& o,
     ToolPose pose;
     pose.feed_mm_per_min = o.feed_mm_per_min;
     pose.p_w_tip = c1[0] + r * n1;
+    const double taper = o.taper_rad;
     if (o.strategy == FlankStrategy::kSinglePointOffset) {
-      pose.a_w = ruling.normalized();
+      const Eigen::Vector3d e = ruling.normalized();
+      // n1 is normal to e, so the cone's generator a - tan(taper) n_perp,
+      // n_perp = cos(taper) n1 - sin(taper) e, is parallel to e.
+      pose.a_w = std::cos(taper) * e + std::sin(taper) * n1;
+      pose.p_w_tip = c1[0] + r * (std::cos(taper) * n1 - std::sin(taper) * e);
     } else {
       pose.a_w = (c2[0] + r * n2 - pose.p_w_tip).normalized();
+      // A cone: C1 at the tip's radius and C2 at the radius of its own
+      // height, both along the normals made orthogonal to the axis; a
+      // fixed point in the axis, which moves by O(taper^2) each round.
+      for (int round = 0; taper > 0 && round < 8; ++round) {
+        const Eigen::Vector3d a = pose.a_w;
+        const Eigen::Vector3d n1p = (n1 - n1.dot(a) * a).normalized();
+        const Eigen::Vector3d n2p = (n2 - n2.dot(a) * a).normalized();
+        pose.p_w_tip = c1[0] + r * n1p;
+        const double height = (c2[0] - pose.p_w_tip).dot(a);
+        const Eigen::Vector3d top = c2[0] + (r + height * std::tan(taper)) * n2p;
+        pose.a_w = (top - pose.p_w_tip).normalized();
+      }
     }
     if (o.axis_noise_deg > 0) pose.a_w = Perturb(pose.a_w, o.axis_noise_deg * M_PI / 180, &rng);
     out.poses.push_back(pose);
@@ -103,6 +122,7 @@ Status GenerateFlankPath(const RuledSurface& surface, const FlankPathOptions& o,
   Cutter cutter;
   cutter.radius_mm = r;
   cutter.flute_length_mm = o.flute_length_mm > 0 ? o.flute_length_mm : 1.25 * longest_ruling_mm;
+  cutter.taper_rad = o.taper_rad;
   out.cutter = cutter;
   std::ostringstream title;
   title << "tpopt generate: " << surface.name() << ", "

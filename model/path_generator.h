@@ -45,6 +45,11 @@ struct FlankPathOptions {
   unsigned noise_seed = 1;
   // Flute length written with the cutter, mm; 0 = 1.25 x longest ruling.
   double flute_length_mm = 0.0;
+  // Half cone angle of a tapered cutter, radians, in [0, pi/4); 0 is a
+  // cylinder. SPO tilts the axis by it off the ruling towards the cutter
+  // side so that the cone's line of contact is the ruling; DPO puts both
+  // ruling ends on the cone (the radius at the top end is the cone's there).
+  double taper_rad = 0.0;
 
   bool IsValid(std::string* why) const;
 };

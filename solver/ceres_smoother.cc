@@ -152,7 +152,7 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
                         double length_mm, const std::vector<bool>& free_pose,
                         SmoothingState* state, ceres::Problem* problem) {
   DeviationCost::Settings settings{*in.cutter, in.machine->kinematics, o.tolerance_mm,
-                                   o.overcut_factor};
+                                   o.overcut_factor, o.interpolation};
   const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
   const int m = o.ruling_samples;
@@ -197,7 +197,7 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
                         ceres::Problem* problem) {
   if (in.surface == nullptr || in.tolerance_points == nullptr) return;
   DeviationCost::Settings settings{*in.cutter, in.machine->kinematics, o.tolerance_mm,
-                                   o.overcut_factor};
+                                   o.overcut_factor, o.interpolation};
   const ToolPath& path = *in.input;
   for (const TolerancePoint& point : *in.tolerance_points) {
     const Eigen::Vector3d q_w = in.surface->Point(point.u, point.v);

@@ -25,6 +25,7 @@
 #include <ceres/ceres.h>
 
 #include "model/cutter.h"
+#include "model/interpolation.h"
 #include "model/machine.h"
 #include "model/ruled_surface.h"
 #include "model/status.h"
@@ -77,6 +78,10 @@ struct HighAccuracyOptions {
   // micrometre of the two end poses' cutters, which are checked, and a
   // dense path would pay for the between points for nothing. >= 0.
   double between_min_move_mm = 0.1;
+  // The controller's motion the between points follow (model/
+  // interpolation.h). RunSmoothing sets it to its DeviationOptions', so that
+  // the cost and the judge of the result agree.
+  Interpolation interpolation = Interpolation::kJoint;
   // Surface-free mode (no surface): each pose stays within tolerance_mm of
   // the original tip polyline and within this angle of the original axis
   // (solver/tolerance_band_cost.h); the band's walls weigh w_band, and

@@ -20,10 +20,11 @@
 // point's own pose measures its undercut) but not inside it:
 //   r_g = sqrt(w h / (L n)) * min(d_g, 0) / tol * overcut_factor.
 //
-// Between poses the controller interpolates its joints linearly, so the pose
-// at fraction lambda of the move i -> i+1 is J = (1 - lambda) J_i + lambda
-// J_i+1 mapped back to W by the kinematics; the two-pose form evaluates the
-// ruling at the matching surface parameter against that pose.
+// Between poses the pose at fraction lambda of the move i -> i+1 is the
+// controller's (model/interpolation.h): joint, J = (1 - lambda) J_i +
+// lambda J_i+1 mapped back to W by the kinematics, or TCP, the tip linear
+// in W with A, C linear; the two-pose form evaluates the ruling at the
+// matching surface parameter against that pose.
 #ifndef TPOPT_SOLVER_DEVIATION_COST_H_
 #define TPOPT_SOLVER_DEVIATION_COST_H_
 
@@ -33,6 +34,7 @@
 #include <ceres/ceres.h>
 
 #include "model/cutter.h"
+#include "model/interpolation.h"
 #include "model/machine.h"
 #include "solver/pose_parameters.h"
 
@@ -45,6 +47,7 @@ class DeviationCost {
     KinematicParams kinematics;
     double tolerance_mm = 0.01;
     double overcut_factor = 3.0;
+    Interpolation interpolation = Interpolation::kJoint;
   };
 
   // The sample points in W: contact points (on the pose's own ruling) and
@@ -68,10 +71,10 @@ class DeviationCost {
   bool operator()(const T* const pose0, const T* const pose1, T* r) const {
     const Eigen::Matrix<T, 5, 1> j0 = PoseJoints(settings_.kinematics, pose0);
     const Eigen::Matrix<T, 5, 1> j1 = PoseJoints(settings_.kinematics, pose1);
-    const Eigen::Matrix<T, 5, 1> j = T(1.0 - lambda_) * j0 + T(lambda_) * j1;
-    const Eigen::Matrix<T, 3, 1> tip =
-        JointsToWorkpiece<T>(settings_.kinematics, j[kX], j[kY], j[kZ], j[kA], j[kC]);
-    Residuals(tip, AnglesToAxis<T>(j[kA], j[kC]), r);
+    Eigen::Matrix<T, 3, 1> tip, axis;
+    InterpolateMove<T>(settings_.kinematics, settings_.interpolation, j0, j1, PoseTip(pose0),
+                       PoseTip(pose1), T(lambda_), &tip, &axis);
+    Residuals(tip, axis, r);
     return true;
   }
 
@@ -83,7 +86,7 @@ class DeviationCost {
         new DeviationCost(std::move(points), settings, scale), n);
   }
 
-  // Residuals at fraction lambda of the joint-space move between two poses.
+  // Residuals at fraction lambda of the move between two poses.
   static ceres::CostFunction* CreateBetweenPoses(Points points, const Settings& settings,
                                                  double scale, double lambda) {
     const int n = points.size();

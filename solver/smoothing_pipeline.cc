@@ -115,12 +115,20 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   auto stage = [&](const std::string& name) {
     if (settings.on_stage) settings.on_stage(name);
   };
+  // With judge_on_input_range every path is judged on one grid: the
+  // input's covered range (or the one asked for), never the range a
+  // smoothed path happens to cover.
+  DeviationOptions deviation = settings.deviation;
   auto evaluate = [&](const std::string& what, const ToolPath& path, PathMetrics* metrics) {
     stage("evaluating " + what);
-    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, settings.deviation,
+    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, deviation,
                         settings.motion, metrics);
   };
   Status s = evaluate("the input", *job.input, &result->input_metrics);
+  if (s.ok() && result->input_metrics.deviation && settings.judge_on_input_range) {
+    deviation.u_min = result->input_metrics.deviation->u.front();
+    deviation.u_max = result->input_metrics.deviation->u.back();
+  }
   if (s.ok()) s = WithinTravel(*job.machine, *job.input);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
 
@@ -163,7 +171,8 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     std::vector<TolerancePoint> active;
     SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
     inputs.tolerance_points = &active;
-    const HighAccuracyOptions& options = settings.high_accuracy;
+    HighAccuracyOptions options = settings.high_accuracy;
+    options.interpolation = settings.deviation.interpolation;
     const bool held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
     for (int round = 0;; ++round) {
       stage(round == 0 ? "high_accuracy solve"

@@ -42,8 +42,20 @@ struct SmoothingSettings {
   // then refused (kSolver, nothing to write), unless this is set; then the
   // first solve is reported, not refused.
   bool accept_over_tolerance = false;
+  // Judge the initial guess and the output on the grid of the input's
+  // covered range (CoveredRangeU) instead of each path's own, so that a
+  // smoothed path that retreats from the surface's ends is charged for what
+  // it leaves (issue 16, item 4). Off by default on this branch only
+  // because the high-accuracy solve still leaves 0.012-0.018 mm at the end
+  // ruling's foot (u = 1, v = 0) of the presets' blade cases, which the
+  // tolerance check then refuses; the solver fixes of issue 16 (tip height,
+  // tolerance as a constraint) are to turn it on.
+  bool judge_on_input_range = false;
   bool schedule_feed = true;
   FeedScheduleOptions feed;
+  // Also the interpolation model of the high-accuracy cost (its
+  // high_accuracy.interpolation is overridden), so the solve and its judge
+  // agree.
   DeviationOptions deviation;
   MotionOptions motion;
   // Called as each stage starts, e.g. "evaluating the input" (for a

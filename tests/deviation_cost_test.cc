@@ -62,6 +62,38 @@ TEST(DeviationCostTest, MidMoveUsesJointSpaceInterpolation) {
   EXPECT_NEAR(r[0], 50.0, 1e-6);
 }
 
+TEST(DeviationCostTest, MidMoveInTcpModeKeepsTheTipOnTheChord) {
+  // The same two poses as above in TCP mode: mid-move the tip is the
+  // programmed tip (linear in W between two equal tips) and the axis that of
+  // the mean A, C.
+  const double a = 0.3;
+  const Eigen::Vector3d tip(1, 2, 3);
+  std::array<double, 5> p0 = {a, 0.0, 1, 2, 3}, p1 = {a, M_PI / 2, 1, 2, 3};
+  const Eigen::Vector3d mid_axis = AnglesToAxis(a, M_PI / 4);
+  const Eigen::Vector3d radial = mid_axis.cross(Eigen::Vector3d::UnitZ()).normalized();
+  DeviationCost::Points points;
+  points.contact_w = {tip + 10 * mid_axis + 4.5 * radial};
+  DeviationCost::Settings settings = Settings();
+  settings.interpolation = Interpolation::kTcp;
+  std::unique_ptr<ceres::CostFunction> cost(
+      DeviationCost::CreateBetweenPoses(points, settings, 1.0, 0.5));
+  const double* params[] = {p0.data(), p1.data()};
+  double r[1];
+  ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[0], 50.0, 1e-6);
+  // The joint model puts this point elsewhere relative to its cutter.
+  std::unique_ptr<ceres::CostFunction> joint(
+      DeviationCost::CreateBetweenPoses(points, Settings(), 1.0, 0.5));
+  ASSERT_TRUE(joint->Evaluate(params, r, nullptr));
+  EXPECT_GT(std::abs(r[0] - 50.0), 10.0);
+  settings.interpolation = Interpolation::kTcp;
+  std::array<double, 5> q0 = {0.2, 0.4, 0.1, -0.2, 0.05}, q1 = {0.25, 0.5, 0.3, 0.1, 0.0};
+  DeviationCost::Points near;
+  near.contact_w = {{4.5, 0.3, 2}, {3.2, -1, 9}};
+  testing::ExpectJacobiansMatchNumeric(
+      DeviationCost::CreateBetweenPoses(near, settings, 0.7, 0.3), {q0.data(), q1.data()});
+}
+
 TEST(DeviationCostTest, JacobiansMatchNumericDifferences) {
   DeviationCost::Points points;
   points.contact_w = {{4.5, 0.3, 2}, {3.2, -1, 9}};

@@ -63,6 +63,19 @@ ToolPath SpoPath(const RuledSurface& surface, const Cutter& cutter, int poses,
   return path;
 }
 
+// The hypar's SPO path (rulings vertical at u = 0.5) with its axes tilted
+// alternately by +-0.3 deg about y: C swings by up to ~70 deg between
+// neighbouring poses near the pole.
+ToolPath ZigZagThroughThePole(const RuledSurface& hypar, const Cutter& cutter) {
+  ToolPath path = SpoPath(hypar, cutter, 31);
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    const double tilt = (i % 2 == 0 ? 0.3 : -0.3) * kDeg;
+    path.poses[i].a_w =
+        Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitY()) * path.poses[i].a_w;
+  }
+  return path;
+}
+
 // Fast and brute force on the same grid agree to 1 um at every grid point
 // and at the extremes; refinement only ever lowers the sampled minimum.
 void ExpectAgreesWithBruteForce(const RuledSurface& surface,
@@ -154,12 +167,7 @@ TEST(DeviationTest, FollowsFastRotarySwingsNearThePole) {
   // pose that a few samples per move would step over.
   const RuledSurface hypar = Hypar();
   const Cutter cutter{4.0, 40.0, 0.0};
-  ToolPath path = SpoPath(hypar, cutter, 31);
-  for (size_t i = 0; i < path.poses.size(); ++i) {
-    const double tilt = (i % 2 == 0 ? 0.3 : -0.3) * kDeg;
-    path.poses[i].a_w =
-        Eigen::AngleAxisd(tilt, Eigen::Vector3d::UnitY()) * path.poses[i].a_w;
-  }
+  const ToolPath path = ZigZagThroughThePole(hypar, cutter);
   const Machine machine = SimMachine();
   std::vector<JointVector> joints;
   ASSERT_TRUE(machine.AssignJoints(path, &joints).ok());
@@ -190,6 +198,47 @@ TEST(DeviationTest, FollowsFastRotarySwingsNearThePole) {
     EXPECT_GE(fast.deviation_mm[k], brute.deviation_mm[k] - 2e-3)
         << "grid point " << k;
   }
+}
+
+// TCP motion through the pole: the fast evaluator agrees with brute force and
+// with an independent sampling of the closed form (tip linear in W, A and C
+// linear), and differs from the joint model there, where the table's swing
+// of C carries a joint-linear tip off its chord.
+TEST(DeviationTest, TcpMotionNearThePoleFollowsItsClosedForm) {
+  const RuledSurface hypar = Hypar();
+  const Cutter cutter{4.0, 40.0, 0.0};
+  const ToolPath path = ZigZagThroughThePole(hypar, cutter);
+  const Machine machine = SimMachine();
+  DeviationOptions options;
+  options.samples_u = 16;
+  options.samples_v = 4;
+  options.u_min = 0.4;
+  options.u_max = 0.6;
+  options.interpolation = Interpolation::kTcp;
+  ExpectAgreesWithBruteForce(hypar, path, &machine, options, 2000);
+  DeviationReport tcp, joint;
+  ASSERT_TRUE(EvaluateDeviation(hypar, cutter, path, &machine, options, &tcp).ok());
+  std::vector<JointVector> joints;
+  ASSERT_TRUE(machine.AssignJoints(path, &joints).ok());
+  const size_t nv = tcp.v.size();
+  for (size_t k = 0; k < tcp.deviation_mm.size(); k += 7) {
+    const Eigen::Vector3d q = hypar.Point(tcp.u[k / nv], tcp.v[k % nv]);
+    double least = 1e9;
+    for (size_t i = 0; i + 1 < path.poses.size(); ++i) {
+      for (int step = 0; step <= 400; ++step) {
+        const double s = step / 400.0;
+        const JointVector j = (1 - s) * joints[i] + s * joints[i + 1];
+        const Eigen::Vector3d tip = (1 - s) * path.poses[i].p_w_tip + s * path.poses[i + 1].p_w_tip;
+        least = std::min(least, SignedDistanceToCutter<double>(
+                                    cutter, q, tip, AnglesToAxis(j[kA], j[kC])));
+      }
+    }
+    EXPECT_LE(tcp.deviation_mm[k], least + 1e-9) << "grid point " << k;
+    EXPECT_NEAR(tcp.deviation_mm[k], least, 2e-3) << "grid point " << k;
+  }
+  options.interpolation = Interpolation::kJoint;
+  ASSERT_TRUE(EvaluateDeviation(hypar, cutter, path, &machine, options, &joint).ok());
+  EXPECT_GT(joint.max_overcut_mm, tcp.max_overcut_mm + 0.1);
 }
 
 TEST(DeviationTest, MachineMotionDiffersFromSlerpMotion) {
@@ -369,6 +418,54 @@ TEST(DeviationTest, MovesIntoARapidPoseDoNotCut) {
   EXPECT_NEAR(report.At(5, 1), 0.05, 1e-9);
   EXPECT_NEAR(report.At(25, 1), 0.05, 1e-9);
   EXPECT_EQ(report.undercut_u, 0.5);
+}
+
+// A path that stops short of the surface's end, judged on the range its
+// input covered, is charged for the material it leaves there; judged on its
+// own range it would look clean.
+TEST(DeviationTest, PathStoppingShortIsChargedOnTheInputsRange) {
+  const RuledSurface hypar = Hypar();
+  const Cutter cutter{4.0, 40.0, 0.0};
+  const ToolPath full = SpoPath(hypar, cutter, 41);
+  ToolPath short_path = full;
+  short_path.poses.resize(33);  // u = 0 .. 0.8
+  double lo = 0, hi = 0;
+  ASSERT_TRUE(CoveredRangeU(hypar, full, &lo, &hi));
+  EXPECT_NEAR(lo, 0.0, 1e-9);
+  EXPECT_NEAR(hi, 1.0, 1e-9);
+  double short_lo = 0, short_hi = 0;
+  ASSERT_TRUE(CoveredRangeU(hypar, short_path, &short_lo, &short_hi));
+  EXPECT_NEAR(short_hi, 0.8, 1e-6);
+  DeviationOptions own;
+  own.samples_u = 41;
+  own.samples_v = 5;
+  DeviationOptions input_range = own;
+  input_range.u_min = lo;
+  input_range.u_max = hi;
+  const Machine machine = SimMachine();
+  DeviationReport on_own, on_input, brute;
+  ASSERT_TRUE(EvaluateDeviation(hypar, cutter, short_path, &machine, own, &on_own).ok());
+  ASSERT_TRUE(
+      EvaluateDeviation(hypar, cutter, short_path, &machine, input_range, &on_input).ok());
+  ASSERT_TRUE(EvaluateDeviationBruteForce(hypar, cutter, short_path, &machine, input_range, 64,
+                                          &brute)
+                  .ok());
+  // The last pose's cutter at u = 0.8 is far from the u = 1 ruling: the
+  // distance from C1(1) to that static cutter bounds the grid's undercut
+  // from below (no other pose comes nearer: the path runs away from it).
+  const ToolPose& last = short_path.poses.back();
+  const double to_last_mm =
+      SignedDistanceToCutter<double>(cutter, hypar.Point(1.0, 0.0), last.p_w_tip, last.a_w);
+  EXPECT_GT(to_last_mm, 1.0);
+  EXPECT_LT(on_own.max_undercut_mm, 0.05);
+  EXPECT_DOUBLE_EQ(on_input.u.back(), 1.0);
+  EXPECT_GE(on_input.max_undercut_mm, to_last_mm - 1e-9);
+  EXPECT_NEAR(on_input.max_undercut_mm, brute.max_undercut_mm, 1e-3);
+  EXPECT_DOUBLE_EQ(on_input.undercut_u, 1.0);
+  // No cutting move: no range.
+  ToolPath one_pose = full;
+  one_pose.poses.resize(1);
+  EXPECT_FALSE(CoveredRangeU(hypar, one_pose, &lo, &hi));
 }
 
 TEST(DeviationTest, RejectsBadInput) {

@@ -87,6 +87,40 @@ TEST(PathGeneratorTest, DpoOnTheHyparTouchesBothRulingEnds) {
   EXPECT_GT(penetration(spo), 2 * penetration(path));
 }
 
+// A tapered cutter: SPO lays the cone's generator on the ruling (both ends
+// on the flank, measured normal to it), DPO puts both ruling ends on the
+// cone; the cutter carries the taper.
+TEST(PathGeneratorTest, TaperedCutterTouchesTheRulingEnds) {
+  const RuledSurface hypar = Shared("hypar");
+  FlankPathOptions o;
+  o.poses = 11;
+  o.taper_rad = 4.0 * M_PI / 180;
+  for (FlankStrategy strategy :
+       {FlankStrategy::kSinglePointOffset, FlankStrategy::kDoublePointOffset}) {
+    o.strategy = strategy;
+    ToolPath path;
+    ASSERT_TRUE(GenerateFlankPath(hypar, o, &path).ok());
+    ASSERT_TRUE(path.cutter.has_value());
+    EXPECT_EQ(path.cutter->taper_rad, o.taper_rad);
+    for (size_t i = 0; i < path.poses.size(); ++i) {
+      const ToolPose& pose = path.poses[i];
+      EXPECT_NEAR(pose.a_w.norm(), 1.0, 1e-12);
+      for (double v : {0.0, 1.0}) {
+        const double d =
+            SignedDistanceToFlank<double>(*path.cutter, hypar.Point(i / 10.0, v), pose.p_w_tip,
+                                          pose.a_w);
+        // SPO: exact along the whole ruling on its own pose; DPO: the fixed
+        // point to well under a micrometre.
+        EXPECT_NEAR(d, 0.0, strategy == FlankStrategy::kSinglePointOffset ? 1e-9 : 1e-6)
+            << "pose " << i << " v " << v;
+      }
+    }
+  }
+  o.taper_rad = M_PI / 4;
+  ToolPath path;
+  EXPECT_FALSE(GenerateFlankPath(hypar, o, &path).ok());
+}
+
 TEST(PathGeneratorTest, UvDistortionMakesLocalAxisJumps) {
   const RuledSurface blade = Shared("impeller_blade");
   FlankPathOptions o;

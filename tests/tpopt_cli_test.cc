@@ -1,6 +1,7 @@
 // The tpopt command end to end: flags, exit codes, messages, outputs.
 #include <algorithm>
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,6 +22,62 @@ using testing::Tpopt;
 const std::string kBlade = SourcePath("data/surfaces/impeller_blade.json");
 const std::string kSim = SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
 
+
+// A clean DPO path of the shared blade with `poses` poses, written to `cls`.
+void GenerateBladeDpo(int poses, const std::string& cls) {
+  const auto r = RunCommand(Tpopt("generate --surface=" + kBlade + " --cutter_radius=4 --poses=" +
+                                  std::to_string(poses) + " --strategy=dpo --out=" + cls));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+}
+
+// evaluate judges a program on the range it covers; --whole_surface charges
+// a program that stops short for the rest of the surface.
+TEST(TpoptCliTest, WholeSurfaceChargesAPathThatStopsShort) {
+  TempDir dir;
+  const std::string cls = dir.File("p.cls"), part = dir.File("part.cls");
+  GenerateBladeDpo(100, cls);
+  testing::CommandResult r;
+  // The first 60 GOTOs of the program, everything else as it was.
+  std::istringstream in(testing::ReadFileText(cls));
+  std::ofstream out(part);
+  int gotos = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("GOTO/", 0) == 0 && ++gotos > 60) continue;
+    out << line << "\n";
+  }
+  out.close();
+  ASSERT_EQ(gotos, 100);
+  double undercut_mm[2];
+  for (int whole = 0; whole < 2; ++whole) {
+    const std::string report = dir.File("r" + std::to_string(whole) + ".json");
+    r = RunCommand(Tpopt("evaluate --in=" + part + " --surface=" + kBlade + " --machine=" + kSim +
+                         " --samples_u=50 --report=" + report +
+                         (whole ? " --whole_surface" : "")));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    undercut_mm[whole] = ReadJson(report)["max_undercut_mm"].get<double>();
+  }
+  EXPECT_LT(undercut_mm[0], 0.05);
+  EXPECT_GT(undercut_mm[1], 1.0);
+}
+
+// The report names the interpolation model: TCP for APT by default, the
+// flag's otherwise; a model that does not exist is a usage error.
+TEST(TpoptCliTest, InterpolationFlagReachesTheReport) {
+  TempDir dir;
+  const std::string cls = dir.File("p.cls"), report = dir.File("r.json");
+  GenerateBladeDpo(40, cls);
+  testing::CommandResult r;
+  for (const std::string model : {"", "tcp", "joint"}) {
+    r = RunCommand(Tpopt("evaluate --in=" + cls + " --surface=" + kBlade + " --machine=" + kSim +
+                         " --samples_u=20 --report=" + report +
+                         (model.empty() ? "" : " --interpolation=" + model)));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_EQ(ReadJson(report)["interpolation"], model.empty() ? "tcp" : model);
+  }
+  r = RunCommand(Tpopt("evaluate --in=" + cls + " --report=" + report + " --interpolation=spline"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--interpolation=spline"), std::string::npos) << r.output;
+}
 
 TEST(TpoptCliTest, GenerateThenEvaluateWritesASaneReport) {
   TempDir dir;

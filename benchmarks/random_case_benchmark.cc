@@ -1,0 +1,252 @@
+// Both smoothing modes under both interpolation models on random cases
+// (model/random_cases.h): the distribution over the cases of max |dev| /
+// the clean DPO path's, the peak d2A/ds2 and d2C/ds2 / the clean SPO path's,
+// refusals, failures and time. Prints a Markdown table; `--out=FILE.csv`
+// also writes one row per case and configuration.
+//
+//   ./build/benchmarks/random_case_benchmark [--cases=200] [--first_seed=1]
+//       [--poses=40] [--out=random_cases.csv]
+//
+// Deviation is that of the pipeline's own report (the fast exact evaluator
+// on the input's covered range, under the configuration's interpolation
+// model); the DPO reference is evaluated on the same grid and model. A
+// case whose input does not fit its machine is counted apart and not run.
+// A refusal is a solver failure (nothing written: kSolver); a failure is
+// any other error on an input that fits, which should not happen.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "model/atomic_file.h"
+#include "model/json_io.h"
+#include "model/path_metrics.h"
+#include "model/random_cases.h"
+#include "solver/smoothing_pipeline.h"
+
+namespace tpopt {
+namespace {
+
+struct Config {
+  SmoothingMode mode;
+  Interpolation interpolation;
+  const char* ModeName() const { return mode == SmoothingMode::kSpline ? "spline" : "high_accuracy"; }
+};
+
+struct Row {
+  unsigned seed = 0;
+  std::string machine, config_mode, interpolation, outcome, message;
+  double dev_ratio = NAN, a_ratio = NAN, c_ratio = NAN, time_s = 0;
+};
+
+std::string Data(const std::string& relative) {
+  return std::string(TPOPT_SOURCE_DIR) + "/data/" + relative;
+}
+
+// The p-quantile (nearest rank) of `values`, NaN when empty.
+double Quantile(std::vector<double> values, double p) {
+  if (values.empty()) return NAN;
+  std::sort(values.begin(), values.end());
+  const size_t rank = static_cast<size_t>(std::ceil(p * values.size()));
+  return values[std::min(values.size() - 1, rank == 0 ? 0 : rank - 1)];
+}
+
+double Ratio(double value, double reference) {
+  return reference > 0 ? value / reference : (value > 0 ? INFINITY : 1.0);
+}
+
+Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
+            const PathMetrics& spo) {
+  SmoothingSettings settings;
+  settings.mode = config.mode;
+  settings.deviation.interpolation = config.interpolation;
+  settings.judge_on_input_range = true;
+  SmoothingResult result;
+  SmoothingFailure failure;
+  const auto start = std::chrono::steady_clock::now();
+  const Status s =
+      RunSmoothing({&c.cam_path, &c.surface, &c.cutter, &c.machine}, settings, &result, &failure);
+  Row row;
+  row.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  row.seed = c.seed;
+  row.machine = c.machine.name;
+  row.config_mode = config.ModeName();
+  row.interpolation = InterpolationName(config.interpolation);
+  if (!s.ok()) {
+    row.outcome = failure == SmoothingFailure::kSolver ? "refused" : "failed";
+    row.message = s.message();
+    return row;
+  }
+  row.outcome = "ok";
+  const MotionReport& out = result.output_metrics.motion;
+  row.dev_ratio = Ratio(WorstDeviationMm(result.output_metrics), WorstDeviationMm(dpo));
+  row.a_ratio = Ratio(out.axes[kA].peak_second_derivative_per_mm2,
+                      spo.motion.axes[kA].peak_second_derivative_per_mm2);
+  row.c_ratio = Ratio(out.axes[kC].peak_second_derivative_per_mm2,
+                      spo.motion.axes[kC].peak_second_derivative_per_mm2);
+  return row;
+}
+
+std::string CsvField(std::string text) {
+  std::replace(text.begin(), text.end(), '"', '\'');
+  return "\"" + text + "\"";
+}
+
+int Main(int argc, char** argv) {
+  int cases = 200, poses = 40;
+  unsigned first_seed = 1;
+  std::string csv_path;
+  for (int i = 1; i < argc; ++i) {
+    const char* arg = argv[i];
+    if (std::strncmp(arg, "--cases=", 8) == 0) {
+      cases = std::atoi(arg + 8);
+    } else if (std::strncmp(arg, "--poses=", 8) == 0) {
+      poses = std::atoi(arg + 8);
+    } else if (std::strncmp(arg, "--first_seed=", 13) == 0) {
+      first_seed = static_cast<unsigned>(std::strtoul(arg + 13, nullptr, 10));
+    } else if (std::strncmp(arg, "--out=", 6) == 0) {
+      csv_path = arg + 6;
+    } else {
+      std::fprintf(stderr,
+                   "usage: %s [--cases=200] [--first_seed=1] [--poses=40] [--out=FILE.csv]\n",
+                   argv[0]);
+      return 2;
+    }
+  }
+  std::vector<Machine> machines(2);
+  for (size_t k = 0; k < 2; ++k) {
+    const char* name = k == 0 ? "machines/jcde2022_ac.json" : "machines/linuxcnc_xyzac_trt_sim.json";
+    const Status s = ReadMachineJson(Data(name), &machines[k]);
+    if (!s.ok()) {
+      std::fprintf(stderr, "%s\n", s.message().c_str());
+      return 1;
+    }
+  }
+  RandomCaseOptions options;
+  options.poses = poses;
+  if (std::string why; !options.IsValid(&why) || cases < 1) {
+    std::fprintf(stderr, "bad options: %s (cases %d)\n", why.c_str(), cases);
+    return 2;
+  }
+  const Config configs[] = {{SmoothingMode::kSpline, Interpolation::kTcp},
+                            {SmoothingMode::kSpline, Interpolation::kJoint},
+                            {SmoothingMode::kHighAccuracy, Interpolation::kTcp},
+                            {SmoothingMode::kHighAccuracy, Interpolation::kJoint}};
+  std::vector<Row> rows;
+  int not_fitting = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (int k = 0; k < cases; ++k) {
+    RandomCase c;
+    const Status s = MakeRandomCase(first_seed + static_cast<unsigned>(k), options, machines, &c);
+    if (!s.ok()) {
+      std::fprintf(stderr, "seed %u: %s\n", first_seed + k, s.message().c_str());
+      return 1;
+    }
+    if (!c.fits_machine) {
+      ++not_fitting;
+      std::fprintf(stderr, "\nseed %u does not fit %s: %s\n", c.seed, c.machine.name.c_str(),
+                   c.fit_note.c_str());
+      continue;
+    }
+    double u_min = 0, u_max = 1;
+    CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max);
+    // The references under each model (index: Interpolation), on the grid
+    // the pipeline judges the output on.
+    PathMetrics dpo[2], spo;
+    for (const Interpolation model : {Interpolation::kTcp, Interpolation::kJoint}) {
+      DeviationOptions deviation;
+      deviation.u_min = u_min;
+      deviation.u_max = u_max;
+      deviation.interpolation = model;
+      Status r = EvaluatePath(c.clean_dpo, c.machine, &c.surface, c.cutter, deviation,
+                              MotionOptions(), &dpo[static_cast<int>(model)]);
+      if (r.ok()) {
+        r = EvaluatePath(c.clean_spo, c.machine, nullptr, c.cutter, deviation, MotionOptions(),
+                         &spo);
+      }
+      if (!r.ok()) {
+        std::fprintf(stderr, "seed %u: the references: %s\n", c.seed, r.message().c_str());
+        return 1;
+      }
+    }
+    for (const Config& config : configs) {
+      rows.push_back(RunCase(c, config, dpo[static_cast<int>(config.interpolation)], spo));
+      if (rows.back().outcome != "ok") {
+        std::fprintf(stderr, "\nseed %u %s %s %s: %s\n", c.seed, config.ModeName(),
+                     InterpolationName(config.interpolation), rows.back().outcome.c_str(),
+                     rows.back().message.c_str());
+      }
+    }
+    std::fprintf(stderr, ".");
+  }
+  const double total_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::fprintf(stderr, "\n");
+
+  std::printf("%d random cases (seeds %u-%u, %d CAM poses each), %d do not fit their machine; "
+              "%.0f s in all\n\n",
+              cases, first_seed, first_seed + cases - 1, poses, not_fitting, total_s);
+  std::printf("| mode | interpolation | run | refused | failed | max\\|dev\\|/DPO median / p95 / "
+              "worst | <= 0.7 | <= 1.0 | d2A/SPO median / p95 / worst | d2C/SPO median / p95 / "
+              "worst | time s median / p95 / worst |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Config& config : configs) {
+    std::vector<double> dev, a, cc, time;
+    int run = 0, refused = 0, failed = 0, within_07 = 0, within_10 = 0;
+    for (const Row& row : rows) {
+      if (row.config_mode != config.ModeName() ||
+          row.interpolation != InterpolationName(config.interpolation)) {
+        continue;
+      }
+      ++run;
+      time.push_back(row.time_s);
+      if (row.outcome == "refused") ++refused;
+      if (row.outcome == "failed") ++failed;
+      if (row.outcome != "ok") continue;
+      dev.push_back(row.dev_ratio);
+      a.push_back(row.a_ratio);
+      cc.push_back(row.c_ratio);
+      within_07 += row.dev_ratio <= 0.7;
+      within_10 += row.dev_ratio <= 1.0;
+    }
+    auto three = [](const std::vector<double>& v, const char* format) {
+      char buf[96];
+      std::snprintf(buf, sizeof(buf), format, Quantile(v, 0.5), Quantile(v, 0.95),
+                    v.empty() ? NAN : *std::max_element(v.begin(), v.end()));
+      return std::string(buf);
+    };
+    std::printf("| %s | %s | %d | %d | %d | %s | %d | %d | %s | %s | %s |\n", config.ModeName(),
+                InterpolationName(config.interpolation), run, refused, failed,
+                three(dev, "%.2f / %.2f / %.2f").c_str(), within_07, within_10,
+                three(a, "%.2f / %.2f / %.2f").c_str(), three(cc, "%.2f / %.2f / %.2f").c_str(),
+                three(time, "%.2f / %.2f / %.2f").c_str());
+  }
+  if (!csv_path.empty()) {
+    std::ostringstream csv;
+    csv << "seed,machine,mode,interpolation,outcome,dev_over_dpo,d2a_over_spo,d2c_over_spo,"
+           "time_s,message\n";
+    for (const Row& row : rows) {
+      char numbers[160];
+      std::snprintf(numbers, sizeof(numbers), "%.6g,%.6g,%.6g,%.4f", row.dev_ratio, row.a_ratio,
+                    row.c_ratio, row.time_s);
+      csv << row.seed << "," << row.machine << "," << row.config_mode << "," << row.interpolation
+          << "," << row.outcome << "," << numbers << "," << CsvField(row.message) << "\n";
+    }
+    const Status w = WriteFileAtomically(csv_path, csv.str());
+    if (!w.ok()) {
+      std::fprintf(stderr, "%s\n", w.message().c_str());
+      return 1;
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace tpopt
+
+int main(int argc, char** argv) { return tpopt::Main(argc, argv); }
