@@ -94,7 +94,15 @@ DEFINE_double(w_tip_second, 1e-2, "high_accuracy: weight of the tip's d2p/ds2, m
 DEFINE_double(w_tip_third, 0.0, "high_accuracy: weight of the tip's d3p/ds3, mm^4.");
 DEFINE_double(w_limits, 0.0, "high_accuracy: weight of axis velocity/acceleration/jerk excess.");
 DEFINE_double(limit_margin, 0.95, "high_accuracy: limit penalties start at this fraction.");
-DEFINE_double(w_tip_height, 1.0, "high_accuracy: weight holding the tip at its contact rail.");
+DEFINE_double(w_tip_height, 1.0,
+              "high_accuracy: weight holding each tip where the input had it along its axis "
+              "relative to the floor (rail 0).");
+DEFINE_double(axis_cone_deg, 12.0,
+              "high_accuracy with a surface: each tool axis stays within this angle of the "
+              "input's, deg (0, 90].");
+DEFINE_double(w_walls, 1e4,
+              "high_accuracy: weight of the walls keeping each axis in its cone and on its side "
+              "of the surface and each linear joint inside its travel (0 = off).");
 DEFINE_int32(ruling_samples, 7, "high_accuracy: deviation samples along each ruling.");
 DEFINE_int32(between_samples, 1, "high_accuracy: deviation checks inside each move.");
 DEFINE_int32(max_iterations, 100, "high_accuracy: Ceres iteration limit.");

@@ -64,6 +64,8 @@ DECLARE_double(w_tip_third);
 DECLARE_double(w_limits);
 DECLARE_double(limit_margin);
 DECLARE_double(w_tip_height);
+DECLARE_double(axis_cone_deg);
+DECLARE_double(w_walls);
 DECLARE_int32(ruling_samples);
 DECLARE_int32(between_samples);
 DECLARE_int32(max_iterations);

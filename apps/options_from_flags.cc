@@ -1,5 +1,7 @@
 #include "apps/options_from_flags.h"
 
+#include <gflags/gflags.h>
+
 #include "apps/flags.h"
 
 namespace tpopt {
@@ -24,7 +26,17 @@ Status LinkMoveOptionsFromFlags(LinkMoveOptions* links) {
   return Status::Ok();
 }
 
-Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptions* ha) {
+namespace {
+
+// `flag_value` unless the flag was left at its default, then `fallback`.
+double UnlessDefault(const char* flag, double flag_value, double fallback) {
+  return gflags::GetCommandLineFlagInfoOrDie(flag).is_default ? fallback : flag_value;
+}
+
+}  // namespace
+
+Status SmootherOptionsFromFlags(bool surface_free, SplineSmootherOptions* spline,
+                                HighAccuracyOptions* ha) {
   spline->angle_tolerance_deg = FLAGS_spline_tolerance_deg;
   spline->zone_factor = FLAGS_zone_factor;
   spline->zone_padding = FLAGS_zone_padding;
@@ -42,6 +54,8 @@ Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptio
   ha->w_limits = FLAGS_w_limits;
   ha->limit_margin = FLAGS_limit_margin;
   ha->w_tip_height = FLAGS_w_tip_height;
+  ha->axis_cone_deg = FLAGS_axis_cone_deg;
+  ha->w_walls = FLAGS_w_walls;
   ha->ruling_samples = FLAGS_ruling_samples;
   ha->between_samples = FLAGS_between_samples;
   ha->max_iterations = FLAGS_max_iterations;
@@ -53,6 +67,12 @@ Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptio
   ha->num_threads = FLAGS_num_threads;
   ha->default_feed_mm_per_min = FLAGS_feed;
   ha->angle_tolerance_deg = FLAGS_angle_tolerance_deg;
+  if (surface_free) {
+    const HighAccuracyOptions defaults = HighAccuracyOptions::SurfaceFree();
+    ha->w_second = UnlessDefault("w_second", FLAGS_w_second, defaults.w_second);
+    ha->w_third = UnlessDefault("w_third", FLAGS_w_third, defaults.w_third);
+    ha->w_tip_second = UnlessDefault("w_tip_second", FLAGS_w_tip_second, defaults.w_tip_second);
+  }
   std::string why;
   if (!spline->IsValid(&why)) return Status::Error(why);
   if (!ha->IsValid(&why)) return Status::Error(why);

@@ -17,7 +17,11 @@ Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion
 
 Status LinkMoveOptionsFromFlags(LinkMoveOptions* links);
 
-Status SmootherOptionsFromFlags(SplineSmootherOptions* spline, HighAccuracyOptions* high_accuracy);
+// Without a surface (surface_free), the high-accuracy weights the command
+// line leaves at their flag defaults take HighAccuracyOptions::SurfaceFree()'s
+// values instead, so that a run without the preset works.
+Status SmootherOptionsFromFlags(bool surface_free, SplineSmootherOptions* spline,
+                                HighAccuracyOptions* high_accuracy);
 
 // --output_curve (bspline or not), --curve_step_mm and the --fit_* flags;
 // errors are usage errors.

@@ -123,7 +123,9 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                        {"pole_passages", ha.pole_passages},
                        {"pole_passages_rerouted", ha.pole_passages_rerouted},
                        {"pole_passages_in_windows", ha.pole_passages_in_windows},
-                       {"solve_tolerance_mm", result.solve_tolerance_mm}};
+                       {"solve_tolerance_mm", result.solve_tolerance_mm},
+                       {"tolerance_rounds", result.tolerance_rounds},
+                       {"tolerance_points", result.tolerance_points}};
   }
   return report;
 }

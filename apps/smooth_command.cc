@@ -72,9 +72,10 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
     const HighAccuracyReport& ha = result.high_accuracy;
     std::printf("  high_accuracy: %d iterations, %.3f s, cost %.4g -> %.4g\n", ha.iterations,
                 ha.solve_time_s, ha.initial_cost, ha.final_cost);
-    if (result.solve_tolerance_mm < settings.high_accuracy.tolerance_mm) {
-      std::printf("  solved with the tolerance unit tightened to %.4g mm to hold %.4g mm\n",
-                  result.solve_tolerance_mm, settings.high_accuracy.tolerance_mm);
+    if (result.tolerance_rounds > 0) {
+      std::printf("  %d more solves held %d grid points to the tolerance of %.4g mm\n",
+                  result.tolerance_rounds, result.tolerance_points,
+                  settings.high_accuracy.tolerance_mm);
     }
     if (ha.pole_passages > 0) {
       std::printf("  pole passages: %d solved both ways round A = 0 (%d in a window round them), "
@@ -132,7 +133,8 @@ int RunSmooth(const Invocation& invocation) {
   }
   LinkMoveOptions links;
   if (s.ok()) s = LinkMoveOptionsFromFlags(&links);
-  if (s.ok()) s = SmootherOptionsFromFlags(&settings.spline, &settings.high_accuracy);
+  if (s.ok()) s = SmootherOptionsFromFlags(FLAGS_surface.empty(), &settings.spline,
+                                              &settings.high_accuracy);
   if (s.ok() && !(FLAGS_resample_step_mm >= 0)) {
     s = Status::Error("--resample_step_mm=" + std::to_string(FLAGS_resample_step_mm) +
                       " must be >= 0");

@@ -4,8 +4,16 @@
 #include <cmath>
 #include <limits>
 
+#include <glog/logging.h>
+
 namespace tpopt {
 namespace {
+
+// A run whose median tip is within this of the floor (mm along the axis) is
+// on it: SPO and DPO tips sit at the floor's offset point, and axis noise or
+// a tilt moves a pose's height by R sin(angle), 0.2 mm at 3 deg and R 4,
+// with the foot of the tip still on its ruling.
+constexpr double kOnTheFloorMm = 0.25;
 
 // g(u) = (C(u) - point) . C'(u): zero at a foot point, derivative
 // |C'|^2 + (C - point) . C''.
@@ -60,6 +68,23 @@ double ProjectOntoCurve(const BSplineCurve& curve, const Eigen::Vector3d& point,
   return u;
 }
 
+std::vector<double> RunOverhangs(const BSplineCurve& rail, const ToolPath& path,
+                                 const std::vector<double>& u) {
+  CHECK_EQ(u.size(), path.poses.size());
+  std::vector<double> overhang_mm(path.poses.size(), 0.0);
+  for (size_t first = 0; first < path.poses.size();) {
+    const size_t end = RunEnd(path, first);
+    std::vector<double> heights;
+    for (size_t i = first; i < end; ++i) {
+      heights.push_back((rail.Point(u[i]) - path.poses[i].p_w_tip).dot(path.poses[i].a_w));
+    }
+    std::nth_element(heights.begin(), heights.begin() + heights.size() / 2, heights.end());
+    std::fill(overhang_mm.begin() + first, overhang_mm.begin() + end, heights[heights.size() / 2]);
+    first = end;
+  }
+  return overhang_mm;
+}
+
 std::vector<double> ProjectPathOntoRail(const BSplineCurve& rail, const ToolPath& path,
                                         double window_u) {
   std::vector<double> u(path.poses.size(), 0.0);
@@ -79,6 +104,19 @@ std::vector<double> ProjectPathOntoRail(const BSplineCurve& rail, const ToolPath
     }
     previous = u[i];
     have_previous = true;
+  }
+  // From the tip's foot to the foot of the axis point at the run's overhang
+  // (header). The overhang measured at the tip's foot is off by the foot's
+  // error times the axis' lean along the rail; each pass shrinks that error
+  // by the same factor, and three leave nothing measurable.
+  for (int pass = 0; pass < 3; ++pass) {
+    const std::vector<double> overhang_mm = RunOverhangs(rail, path, u);
+    for (size_t i = 0; i < path.poses.size(); ++i) {
+      if (overhang_mm[i] <= kOnTheFloorMm) continue;
+      const Eigen::Vector3d x = path.poses[i].p_w_tip + overhang_mm[i] * path.poses[i].a_w;
+      u[i] = ProjectOntoCurve(rail, x, std::max(0.0, u[i] - window_u),
+                              std::min(1.0, u[i] + window_u), 16);
+    }
   }
   return u;
 }

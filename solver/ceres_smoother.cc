@@ -12,11 +12,15 @@
 #include "model/axis_metrics.h"
 #include "model/rail_projection.h"
 #include "solver/coarse_to_fine.h"
+#include "solver/axis_cone_cost.h"
 #include "solver/axis_limit_cost.h"
 #include "solver/deviation_cost.h"
+#include "solver/overhang.h"
 #include "solver/smoothness_cost.h"
+#include "solver/surface_side_cost.h"
 #include "solver/tip_height_cost.h"
 #include "solver/tolerance_band_cost.h"
+#include "solver/travel_cost.h"
 
 namespace tpopt {
 namespace {
@@ -185,6 +189,76 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
   }
 }
 
+// The active set of points held to the tolerance: each on every move of
+// the path whose two contact rulings bracket its u, at the matching
+// fraction of the move.
+void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                        const std::vector<bool>& free_pose, SmoothingState* state,
+                        ceres::Problem* problem) {
+  if (in.surface == nullptr || in.tolerance_points == nullptr) return;
+  DeviationCost::Settings settings{*in.cutter, in.machine->kinematics, o.tolerance_mm,
+                                   o.overcut_factor, o.interpolation};
+  const ToolPath& path = *in.input;
+  for (const TolerancePoint& point : *in.tolerance_points) {
+    const Eigen::Vector3d q_w = in.surface->Point(point.u, point.v);
+    const double scale = std::sqrt(o.w_deviation * point.weight);
+    for (size_t i = 0; i + 1 < path.poses.size(); ++i) {
+      if (IsPositioningMove(path.poses[i + 1]) || !(free_pose[i] || free_pose[i + 1])) continue;
+      const double u0 = state->u[i], u1 = state->u[i + 1];
+      if (point.u < std::min(u0, u1) || point.u > std::max(u0, u1)) continue;
+      const double lambda = u1 != u0 ? (point.u - u0) / (u1 - u0) : 0.0;
+      DeviationCost::Points points;
+      points.contact_w.push_back(q_w);
+      state->families["tolerance_points"].push_back(problem->AddResidualBlock(
+          DeviationCost::CreateBetweenPoses(std::move(points), settings, scale, lambda), nullptr,
+          state->poses[i].data(), state->poses[i + 1].data()));
+    }
+  }
+}
+
+// The walls every free pose stays within whatever the other families pull:
+// the machine's linear travel and, with a surface, the cone round the
+// input's axis and the cutter's side of the surface.
+void AddWallFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
+                   const std::vector<bool>& free_pose, SmoothingState* state,
+                   ceres::Problem* problem) {
+  if (o.w_walls <= 0) return;
+  const ToolPath& path = *in.input;
+  const size_t n = path.poses.size();
+  std::array<double, 3> lo, hi;
+  bool any_travel = false;
+  for (int j = 0; j < 3; ++j) {
+    lo[j] = in.machine->limits[j].min;
+    hi[j] = in.machine->limits[j].max;
+    any_travel = any_travel || std::isfinite(lo[j]) || std::isfinite(hi[j]);
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (!free_pose[i]) continue;
+    const double h = std::max(
+        (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2, kMinStep);
+    const double scale = std::sqrt(o.w_walls * h / length_mm);
+    std::vector<ceres::ResidualBlockId>& ids = state->families["walls"];
+    double* pose = state->poses[i].data();
+    if (any_travel) {
+      ids.push_back(problem->AddResidualBlock(
+          TravelCost::Create(in.machine->kinematics, lo, hi, o.travel_margin_mm, scale), nullptr,
+          pose));
+    }
+    if (in.surface == nullptr) continue;
+    const ToolPose& input = path.poses[i];
+    ids.push_back(problem->AddResidualBlock(
+        AxisConeCost::Create(input.a_w, o.axis_cone_deg * M_PI / 180.0, scale), nullptr, pose));
+    std::array<SurfaceSideCost::End, 2> ends;
+    for (int k = 0; k < 2; ++k) {
+      ends[k].q_w = in.surface->Point(state->u[i], k);
+      ends[k].normal_w = in.surface->Normal(state->u[i], k);
+      const double height_mm = (ends[k].q_w - input.p_w_tip).dot(input.a_w);
+      ends[k].radius_mm = std::max(in.cutter->RadiusAt(height_mm), 1e-3);
+    }
+    ids.push_back(problem->AddResidualBlock(SurfaceSideCost::Create(ends, scale), nullptr, pose));
+  }
+}
+
 // The band around the original program of every free pose (surface-free).
 ToleranceBandCost::Band BandOf(const ToolPath& path, const HighAccuracyOptions& o, size_t i) {
   const size_t n = path.poses.size();
@@ -239,8 +313,8 @@ bool ClampToBand(const ToleranceBandCost::Band& band, ToolPose* pose) {
 
 bool HighAccuracyOptions::IsValid(std::string* why) const {
   std::ostringstream err;
-  const double weights[] = {w_deviation, w_second, w_third, w_tip_second,
-                            w_tip_third, w_limits, w_tip_height};
+  const double weights[] = {w_deviation, w_second,     w_third, w_tip_second,
+                            w_tip_third, w_limits,     w_tip_height, w_walls};
   if (!(tolerance_mm > 0) || !std::isfinite(tolerance_mm)) {
     err << "tolerance " << tolerance_mm << " mm must be > 0";
   } else if (!(overcut_factor >= 1) || !std::isfinite(overcut_factor)) {
@@ -248,6 +322,10 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
   } else if (std::any_of(std::begin(weights), std::end(weights),
                          [](double w) { return !(w >= 0) || !std::isfinite(w); })) {
     err << "every weight must be finite and >= 0";
+  } else if (!(axis_cone_deg > 0 && axis_cone_deg <= 90)) {
+    err << "axis cone " << axis_cone_deg << " deg must be in (0, 90]";
+  } else if (!(travel_margin_mm > 0) || !std::isfinite(travel_margin_mm)) {
+    err << "travel margin " << travel_margin_mm << " mm must be > 0";
   } else if (!(limit_margin > 0 && limit_margin <= 1)) {
     err << "limit margin " << limit_margin << " must be in (0, 1]";
   } else if (std::any_of(guard_distances_mm.begin(), guard_distances_mm.end(),
@@ -280,6 +358,14 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
   }
   if (why != nullptr) *why = err.str();
   return false;
+}
+
+HighAccuracyOptions HighAccuracyOptions::SurfaceFree() {
+  HighAccuracyOptions options;
+  options.w_second = 1e6;
+  options.w_third = 0.0;
+  options.w_tip_second = 0.0;
+  return options;
 }
 
 Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
@@ -343,11 +429,19 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   } else {
     AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
   }
+  AddWallFamily(in, o, length_mm, free_pose, state, problem);
+  AddTolerancePoints(in, o, free_pose, state, problem);
+  std::vector<double> overhang_mm;
+  if (in.surface != nullptr) {
+    s = PoseOverhangs(in.surface->rail(0), path, state->u, &overhang_mm);
+    if (!s.ok()) return s;
+  }
   for (size_t i = 0; i < n; ++i) {
     if (!free_pose[i] || o.w_tip_height <= 0 || in.surface == nullptr) continue;
     const double h = (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2;
+    const Eigen::Vector3d floor_w = in.surface->rail(0).Point(state->u[i]);
     state->families["tip_height"].push_back(problem->AddResidualBlock(
-        TipHeightCost::Create(in.surface->rail(0).Point(state->u[i]),
+        TipHeightCost::Create(floor_w, overhang_mm[i],
                               std::sqrt(o.w_tip_height * h / length_mm) / o.tolerance_mm),
         nullptr, state->poses[i].data()));
   }
@@ -477,6 +571,18 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
   }
   report->solve_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Every solve, at every coarse level and in every window, is held to the
+  // travel here, where its own poses are known: judged only on the final
+  // path, a level's excursion would surface later as an error about a pose
+  // the input never had.
+  std::vector<JointVector> joints;
+  s = inputs.machine->AssignJoints(*out, &joints);
+  if (s.ok()) s = inputs.machine->CheckTravel(*out, joints);
+  if (!s.ok()) {
+    return Status::Error("a solve over " + std::to_string(out->poses.size()) +
+                         " poses moved a pose out of the machine (the value is the solver's; "
+                         "the input fits): " + s.message());
+  }
   return Status::Ok();
 }
 

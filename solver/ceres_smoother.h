@@ -51,8 +51,20 @@ struct HighAccuracyOptions {
   double w_limits = 0.0;
   // The limit penalties start at this fraction of each limit. (0, 1].
   double limit_margin = 0.95;
-  // Weight of the tip-height gauge (dimensionless).
+  // Weight of the tip-height gauge (dimensionless), which holds each tip
+  // where the input had it along the axis relative to the floor (rail 0).
   double w_tip_height = 1.0;
+  // With a surface, each axis stays within this half angle of the input's
+  // axis (solver/axis_cone_cost.h): wide enough for the smoothing (which
+  // turns axes by a degree or two) and for 0.5 deg of CAM noise, narrow
+  // enough that no axis swings round its contact line. Degrees, (0, 90].
+  double axis_cone_deg = 12.0;
+  // Weight of the walls that keep each axis in its cone and on its side of
+  // the surface (solver/surface_side_cost.h), and each linear joint inside
+  // its travel less travel_margin_mm (solver/travel_cost.h). Dimensionless;
+  // 0 turns them off.
+  double w_walls = 1e4;
+  double travel_margin_mm = 0.5;
   // Sample points along each ruling for the deviation family. >= 2.
   int ruling_samples = 7;
   // Distances (mm along rail 0) of the guard rulings on each side of a
@@ -113,6 +125,25 @@ struct HighAccuracyOptions {
   std::function<void(int iteration, double cost)> on_iteration;
 
   bool IsValid(std::string* why) const;
+
+  // The defaults for a run without a surface (data/presets/surface_free.flags):
+  // there the band holds the accuracy, so the axes are smoothed as hard as
+  // it allows (w_second 1e6) and the tip and third-derivative terms, which
+  // only fight the band's walls, are off. With the surface defaults above,
+  // the solve of LinuxCNC's impeller program ends worse than its start.
+  static HighAccuracyOptions SurfaceFree();
+};
+
+// A surface point the solve must bring within the tolerance: one of the
+// active set of grid points where a solve left the surface farther from the
+// cutter than the tolerance (solver/smoothing_pipeline.cc). Its residual is
+// the deviation family's at that one point, on the move whose contact
+// rulings bracket u, with weight w_deviation * weight: at one tolerance of
+// deviation it costs what the whole path does at one tolerance, times
+// weight (dimensionless).
+struct TolerancePoint {
+  double u = 0.0, v = 0.0;  // surface parameters
+  double weight = 1.0;
 };
 
 // What the problem is built from. All pointers are non-null except that the
@@ -129,6 +160,9 @@ struct SmoothingInputs {
   // of a window, solver/windowed_solve.h).
   size_t held_first = 0;
   size_t held_last = 0;
+  // With a surface, points held to the tolerance besides the deviation
+  // family (may be null or empty).
+  const std::vector<TolerancePoint>* tolerance_points = nullptr;
 };
 
 // Variables and bookkeeping of a built problem.

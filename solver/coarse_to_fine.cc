@@ -134,7 +134,11 @@ Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOption
   if (!s.ok()) return s;
   ToolPath fine_guess;
   s = InterpolateStations(*inputs.input, stations, coarse_solved, *inputs.machine, &fine_guess);
-  if (!s.ok()) return s;
+  if (!s.ok()) {
+    return Status::Error("the coarse level over " + std::to_string(stations.size()) + " of " +
+                         std::to_string(n) + " poses (the value is the solver's): " +
+                         s.message());
+  }
   SmoothingInputs fine = inputs;
   fine.initial_guess = &fine_guess;
   // From the interpolated stations the deviation is already that of the

@@ -25,29 +25,72 @@ Status WithinTravel(const Machine& machine, const ToolPath& path) {
 // no point of the surface may end up farther from the cutter than the
 // tolerance unless the input was farther still there (at poses the smoother
 // must hold, such as the targets of rapids, the input's error stands).
-Status WithinTolerance(const DeviationReport& in, const DeviationReport& out,
-                       double tolerance_mm) {
+// Returns the grid points (indices into out.deviation_mm) that break it.
+std::vector<size_t> BeyondTolerance(const DeviationReport& in, const DeviationReport& out,
+                                    double tolerance_mm) {
   CHECK_EQ(in.deviation_mm.size(), out.deviation_mm.size());
-  size_t worst = out.deviation_mm.size();
+  std::vector<size_t> beyond;
   for (size_t k = 0; k < out.deviation_mm.size(); ++k) {
     const double d = std::abs(out.deviation_mm[k]);
-    if (d <= tolerance_mm || d <= std::abs(in.deviation_mm[k])) continue;
-    if (worst == out.deviation_mm.size() || d > std::abs(out.deviation_mm[worst])) worst = k;
+    if (d > tolerance_mm && d > std::abs(in.deviation_mm[k])) beyond.push_back(k);
   }
-  if (worst == out.deviation_mm.size()) return Status::Ok();
+  return beyond;
+}
+
+// Why the result is refused: how many points are beyond, and the worst.
+std::string BeyondToleranceMessage(const DeviationReport& in, const DeviationReport& out,
+                                   const std::vector<size_t>& beyond, double tolerance_mm) {
+  CHECK(!beyond.empty());
+  const size_t worst = *std::max_element(beyond.begin(), beyond.end(), [&](size_t a, size_t b) {
+    return std::abs(out.deviation_mm[a]) < std::abs(out.deviation_mm[b]);
+  });
   const size_t nv = out.v.size();
   std::ostringstream err;
   err << "the best path found is " << std::abs(out.deviation_mm[worst]) << " mm "
       << (out.deviation_mm[worst] < 0 ? "into" : "short of") << " the surface at (u "
       << out.u[worst / nv] << ", v " << out.v[worst % nv] << "), where the input was "
       << std::abs(in.deviation_mm[worst]) << " mm: beyond the tolerance of " << tolerance_mm
-      << " mm";
-  return Status::Error(err.str());
+      << " mm at " << beyond.size() << " of " << out.deviation_mm.size() << " grid points";
+  return err.str();
 }
 
-// How many times the solve's tolerance unit may be halved to bring the
-// exact swept envelope within the stated tolerance.
-constexpr int kToleranceTightenings = 2;
+// The tolerance is a constraint, not a weight: the points a solve leaves
+// beyond it join an active set that the next solve holds with a penalty of
+// its own (ceres_smoother.h, TolerancePoint), multiplied by kPenaltyGrowth
+// each round a point is still beyond, so that the rest of the surface keeps
+// the weights the smoothing was tuned with. After kToleranceRounds rounds
+// what is still beyond is taken to be infeasible and refused.
+constexpr int kToleranceRounds = 4;
+constexpr double kFirstPenalty = 10.0;
+constexpr double kPenaltyGrowth = 10.0;
+
+// Adds the grid points `beyond` and their four neighbours on the grid to
+// `active` (a point held alone hands its excess to the next grid point
+// along u), or raises the penalty of those in it already.
+void GrowActiveSet(const DeviationReport& out, const std::vector<size_t>& beyond,
+                   std::vector<TolerancePoint>* active) {
+  const int nu = static_cast<int>(out.u.size()), nv = static_cast<int>(out.v.size());
+  std::vector<TolerancePoint> grown = *active;
+  for (size_t k : beyond) {
+    const int iu = static_cast<int>(k) / nv, iv = static_cast<int>(k) % nv;
+    const int offsets[5][2] = {{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+    for (const auto& d : offsets) {
+      const int ju = iu + d[0], jv = iv + d[1];
+      if (ju < 0 || ju >= nu || jv < 0 || jv >= nv) continue;
+      const double u = out.u[ju], v = out.v[jv];
+      auto same = [&](const TolerancePoint& p) { return p.u == u && p.v == v; };
+      auto it = std::find_if(grown.begin(), grown.end(), same);
+      if (it == grown.end()) {
+        grown.push_back({u, v, kFirstPenalty});
+      } else if (std::find_if(active->begin(), active->end(), same) != active->end() &&
+                 d[0] == 0 && d[1] == 0) {
+        // Held in the last solve and still beyond: hold it harder.
+        it->weight *= kPenaltyGrowth;
+      }
+    }
+  }
+  *active = std::move(grown);
+}
 
 Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure* failure) {
   *failure = kind;
@@ -128,22 +171,28 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     const ToolPath& guess = job.surface != nullptr ? spline_path : *job.input;
     s = evaluate("the initial guess", guess, &result->initial_guess_metrics);
     if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
-    const SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
-    // The tolerance is also the unit the solve measures deviation in; where
-    // the exact swept envelope still leaves it, the solve runs again with
-    // that unit halved, which weighs the surface more against smoothness.
+    std::vector<TolerancePoint> active;
+    SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
+    inputs.tolerance_points = &active;
     HighAccuracyOptions options = settings.high_accuracy;
     options.interpolation = settings.deviation.interpolation;
     const bool held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
     for (int round = 0;; ++round) {
       stage(round == 0 ? "high_accuracy solve"
-                       : "high_accuracy solve, tolerance unit tightened to " +
-                             std::to_string(options.tolerance_mm) + " mm");
+                       : "high_accuracy solve, " + std::to_string(active.size()) +
+                             " points held to the tolerance");
+      // The input passed its checks above, so whatever the solve reports
+      // is the solver's failure, not the input's.
       s = SmoothBothWaysRoundPoles(inputs, options, &result->output, &result->high_accuracy);
-      if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+      if (!s.ok()) {
+        return Fail(SmoothingFailure::kSolver, "the high_accuracy solve failed: " + s.message(),
+                    failure);
+      }
       if (!result->high_accuracy.converged) {
         return Fail(SmoothingFailure::kSolver,
-                    "Ceres failed (" + result->high_accuracy.message + ")", failure);
+                    "the high_accuracy solve failed: Ceres found no usable solution (" +
+                        result->high_accuracy.message + ")",
+                    failure);
       }
       s = finish_output();
       if (!s.ok()) return s;
@@ -154,18 +203,24 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                     failure);
       }
       result->solve_tolerance_mm = options.tolerance_mm;
+      result->tolerance_rounds = round;
+      result->tolerance_points = static_cast<int>(active.size());
       if (!held_to_tolerance) break;
-      s = WithinTolerance(*result->input_metrics.deviation,
-                          *result->output_at_input_feed.deviation,
-                          settings.high_accuracy.tolerance_mm);
-      if (s.ok()) break;
-      if (round == kToleranceTightenings) {
-        return Fail(SmoothingFailure::kSolver,
-                    s.message() + ", with the solve's unit tightened to " +
-                        std::to_string(options.tolerance_mm) + " mm",
-                    failure);
+      const DeviationReport& in = *result->input_metrics.deviation;
+      const DeviationReport& out = *result->output_at_input_feed.deviation;
+      const std::vector<size_t> beyond = BeyondTolerance(in, out, options.tolerance_mm);
+      if (beyond.empty()) break;
+      if (round == kToleranceRounds) {
+        double heaviest = 0.0;
+        for (const TolerancePoint& p : active) heaviest = std::max(heaviest, p.weight);
+        std::ostringstream why;
+        why << BeyondToleranceMessage(in, out, beyond, options.tolerance_mm) << ", after "
+            << round << " rounds holding " << active.size()
+            << " points to the tolerance with penalties up to " << heaviest
+            << " times the surface's weight";
+        return Fail(SmoothingFailure::kSolver, why.str(), failure);
       }
-      options.tolerance_mm *= 0.5;
+      GrowActiveSet(out, beyond, &active);
     }
   }
   result->output_metrics = result->output_at_input_feed;

@@ -35,11 +35,12 @@ struct SmoothingSettings {
   // Resample the smoothed path at this arc-length step, mm (0: keep the
   // input's poses). The output metrics are those of the resampled path.
   double resample_step_mm = 0.0;
-  // High accuracy with a surface: a result that leaves any point of the
-  // surface farther from the cutter than high_accuracy.tolerance_mm, and
-  // farther than the input left it, is solved again with the tolerance unit
-  // halved (twice at most) and then refused (kSolver, nothing to write),
-  // unless this is set; then the first solve is reported, not refused.
+  // High accuracy with a surface: a result that leaves any grid point of
+  // the surface farther from the cutter than high_accuracy.tolerance_mm, and
+  // farther than the input left it, is solved again with those points held
+  // to the tolerance by penalties of their own (four rounds at most) and
+  // then refused (kSolver, nothing to write), unless this is set; then the
+  // first solve is reported, not refused.
   bool accept_over_tolerance = false;
   // Judge the initial guess and the output on the grid of the input's
   // covered range (CoveredRangeU) instead of each path's own, so that a
@@ -68,9 +69,13 @@ struct SmoothingResult {
   PathMetrics initial_guess_metrics;  // high-accuracy mode only
   PathMetrics output_at_input_feed;   // before feed scheduling
   PathMetrics output_metrics;         // as written
-  // High accuracy: the tolerance unit of the solve that was kept, mm; below
-  // the stated tolerance where that had to be tightened to keep it.
+  // High accuracy: the tolerance unit of the solve, mm.
   double solve_tolerance_mm = 0.0;
+  // High accuracy with a surface: the solves after the first that held the
+  // grid points a solve had left beyond the tolerance (an active set, each
+  // with a penalty of its own), and how many points that set held.
+  int tolerance_rounds = 0;
+  int tolerance_points = 0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;
   FeedScheduleReport feed;

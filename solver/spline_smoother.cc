@@ -8,6 +8,7 @@
 #include <glog/logging.h>
 
 #include "model/rail_projection.h"
+#include "solver/overhang.h"
 #include "solver/pole_crossing.h"
 #include "solver/smoothing_spline.h"
 
@@ -154,6 +155,7 @@ struct SmoothingJob {
   const Cutter& cutter;
   const SplineSmootherOptions& options;
   std::vector<double> u;  // contact ruling of every pose of `in`; empty without a surface
+  std::vector<double> overhang_mm;  // PoseOverhangs of `in`; empty without a surface
   std::vector<PolePassage> through_pole;  // passages of `in` routed through the pole
 };
 
@@ -262,7 +264,10 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
     ToolPose p = base;
     p.a_w = AnglesToAxis(a_pinned.At(i, s_mm), c_pinned.At(i, s_mm));
     if (job.surface != nullptr) {
-      p.p_w_tip = TangentTip(*job.surface, job.cutter.radius_mm, u_contact, p.a_w);
+      // The tip keeps the input's overhang below the floor along its axis
+      // (the programmer's choice, solver/overhang.h).
+      p.p_w_tip = TangentTip(*job.surface, job.cutter.radius_mm, u_contact, p.a_w) -
+                  job.overhang_mm[first + i] * p.a_w;
     }
     return p;
   };
@@ -383,10 +388,14 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   std::vector<PolePassage> through_pole;
   const ToolPath& source =
       RouteThroughPoles(in, machine, options, &routed, &through_pole, report) ? routed : in;
-  SmoothingJob job{source, machine, surface, cutter, options, {}, std::move(through_pole)};
+  SmoothingJob job{source, machine, surface, cutter, options, {}, {}, std::move(through_pole)};
   // Projected once for the whole path: every run starts at a rapid (or the
   // path's start), where the projection searches the whole rail afresh.
-  if (surface != nullptr) job.u = ProjectPathOntoRail(surface->rail(0), in);
+  if (surface != nullptr) {
+    job.u = ProjectPathOntoRail(surface->rail(0), in);
+    const Status st = PoseOverhangs(surface->rail(0), in, job.u, &job.overhang_mm);
+    if (!st.ok()) return st;
+  }
   ToolPath result = WithoutPoses(in);
   result.poses.reserve(options.insert_transitions ? 2 * in.poses.size() : in.poses.size());
   // Each cutting run separately: a spline must not bridge a rapid between

@@ -71,5 +71,37 @@ TEST(RailProjectionTest, TipsNearTheCentreOfCurvatureKeepTheirRuling) {
   for (size_t i = 0; i < u.size(); ++i) EXPECT_NEAR(u[i], i / 299.0, 1e-6) << i;
 }
 
+// A flank path with its tip 2 mm below the floor along an axis that leans
+// along the rail: the tip's foot lies off the contact ruling (past the
+// rail's end at u = 1), the axis point level with the rail does not. The
+// same path on the floor keeps its tip's foot.
+TEST(RailProjectionTest, TipsBelowTheFloorProjectThroughTheAxis) {
+  RuledSurface surface;
+  ASSERT_TRUE(
+      ReadSurfaceJson(testing::SourcePath("data/surfaces/impeller_blade.json"), &surface).ok());
+  FlankPathOptions g;
+  g.poses = 60;
+  ToolPath on_floor;
+  ASSERT_TRUE(GenerateFlankPath(surface, g, &on_floor).ok());
+  ToolPath below = on_floor;
+  double worst_tip_foot = 0.0;
+  for (size_t i = 0; i < below.poses.size(); ++i) {
+    ToolPose& p = below.poses[i];
+    p.p_w_tip -= 2.0 * p.a_w;
+    const double u = i / 59.0;
+    worst_tip_foot = std::max(worst_tip_foot,
+                              std::abs(ProjectOntoCurve(surface.rail(0), p.p_w_tip) - u));
+  }
+  ASSERT_GT(worst_tip_foot, 1e-3);  // the tip's own foot is off its ruling
+  const std::vector<double> u_below = ProjectPathOntoRail(surface.rail(0), below);
+  const std::vector<double> u_floor = ProjectPathOntoRail(surface.rail(0), on_floor);
+  for (size_t i = 0; i < below.poses.size(); ++i) {
+    EXPECT_NEAR(u_below[i], i / 59.0, 1e-5) << i;  // 0.6 um along the rail
+    EXPECT_NEAR(u_floor[i], i / 59.0, 1e-9) << i;
+  }
+  const std::vector<double> overhang = RunOverhangs(surface.rail(0), below, u_below);
+  for (double h : overhang) EXPECT_NEAR(h, 2.0, 1e-4);
+}
+
 }  // namespace
 }  // namespace tpopt

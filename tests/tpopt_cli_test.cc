@@ -545,5 +545,32 @@ TEST(TpoptCliPicturesTest, ProgressShowsPastTheDelayAndQuietSilencesIt) {
   EXPECT_EQ(r.output.find("tpopt smooth ["), std::string::npos) << r.output;
 }
 
+// Without a surface, high_accuracy takes the surface-free defaults by
+// itself: on LinuxCNC's impeller program the plain command (which once
+// failed, exit 3, worse than its start) writes what the preset writes, byte
+// for byte; a weight given on the command line still wins.
+TEST(TpoptCliTest, SmoothWithoutASurfaceNeedsNoPreset) {
+  const std::string ngc =
+      "/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/vismach/5axis/"
+      "table-rotary-tilting/demos/impeller-7bl-xyzac.ngc";
+  if (!testing::FileExists(ngc)) GTEST_SKIP() << ngc << " absent (linuxcnc-uspace)";
+  testing::TempDir dir;
+  const std::string common = " smooth --quiet --cutter_radius=3 --in=" + ngc + " --machine=" +
+                             testing::SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+  auto r = testing::RunCommand(testing::TpoptBinary() + common +
+                               " --mode=high_accuracy --out=" + dir.File("plain.ngc"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = testing::RunCommand(testing::TpoptBinary() + common + " --flagfile=" +
+                          testing::SourcePath("data/presets/surface_free.flags") +
+                          " --out=" + dir.File("preset.ngc"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string plain = testing::ReadFileText(dir.File("plain.ngc"));
+  EXPECT_FALSE(plain.empty());
+  EXPECT_EQ(plain, testing::ReadFileText(dir.File("preset.ngc")));
+  r = testing::RunCommand(testing::TpoptBinary() + common +
+                          " --mode=high_accuracy --w_second=1000 --out=" + dir.File("own.ngc"));
+  EXPECT_NE(testing::ReadFileText(dir.File("own.ngc")), plain) << r.output;
+}
+
 }  // namespace
 }  // namespace tpopt
