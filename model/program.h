@@ -43,7 +43,7 @@ struct ProgramBlock {
   // cannot place in W, such as G53 moves or moves before every axis is set).
   int pose = -1;
   // True only for a plain cutting move (in G-code: G1 and axis words, F, N,
-  // in absolute G94 mode) that the output may replace by the poses a method
+  // in absolute mode, G93 or G94) that the output may replace by the poses a method
   // made for its run. Every other block is written back verbatim, and its
   // pose, if it has one, must come out of smoothing unchanged.
   bool replaceable = false;
@@ -54,8 +54,12 @@ struct ProgramBlock {
   // the tool tip in W (tcp style); a replaced move is written in the style
   // its block had.
   bool machine_joints = false;
+  // G-code: the block is in G93 inverse-time feed mode; a replaced move is
+  // written with F = 1 / minutes of its planned segment.
+  bool inverse_time = false;
   // The feed word in effect after this block in the source, in the block's
-  // units per minute (G94) as written; 0 when none has been given. A writer
+  // units per minute (G94; G93: 1 / minutes) as written; 0 when none has
+  // been given. A writer
   // that wrote other feeds for replaced moves restores this one before the
   // next verbatim block, which may rely on it being modal.
   double modal_feed = 0.0;
