@@ -2,13 +2,14 @@
 #ifndef TPOPT_MODEL_TOOL_PATH_H_
 #define TPOPT_MODEL_TOOL_PATH_H_
 
+#include <Eigen/Core>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "model/cutter.h"
+#include "model/program.h"
 
 namespace tpopt {
 
@@ -32,18 +33,29 @@ struct ToolPose {
   // cuts (model/link_moves.h). Written as the feed move it is, but, like a
   // rapid, kept as programmed and never smoothed across.
   bool link = false;
+  // True for a move the source program keeps as programmed because a block
+  // that smoothing must not cross comes before it or is it (a non-motion
+  // block, an arc, a G53 move, a move with other words; model/program.h):
+  // like a rapid or link target, kept and never smoothed across. Written as
+  // its source block.
+  bool held = false;
   // 1-based line of the source file the pose came from, 0 if generated.
   int source_line = 0;
   // A and C as the source program gave them (G-code input), if it did.
   // Machine::AssignJoints keeps them while a_w is still the axis they give,
   // so that what a program positions to is written back as programmed.
   std::optional<RotaryJoints> programmed;
+  // Index of the block of ToolPath::program this pose is the move of; -1
+  // for a pose a method made (or a path with no program).
+  int source_block = -1;
 };
 
-// True when the move into `pose` positions the tool rather than cuts (a
-// rapid or a link): its target is kept as programmed, and smoothing, spline
-// runs and derivative stencils stop at it.
-inline bool IsPositioningMove(const ToolPose& pose) { return pose.rapid || pose.link; }
+// True when the move into `pose` is kept as programmed (a rapid, a link or a
+// held move): its target is kept, and smoothing, spline runs and derivative
+// stencils stop at it.
+inline bool IsPositioningMove(const ToolPose& pose) {
+  return pose.rapid || pose.link || pose.held;
+}
 
 // A pose a method makes between poses of its source (a sample, an inserted
 // transition), starting from a copy of `pose`: a feed move inside a run,
@@ -51,8 +63,10 @@ inline bool IsPositioningMove(const ToolPose& pose) { return pose.rapid || pose.
 inline ToolPose Derived(ToolPose pose) {
   pose.rapid = false;
   pose.link = false;
+  pose.held = false;
   pose.source_line = 0;
   pose.programmed.reset();
+  pose.source_block = -1;
   return pose;
 }
 
@@ -62,6 +76,10 @@ struct ToolPath {
   std::optional<Cutter> cutter;
   // Free text carried through to outputs (e.g. the generator's settings).
   std::string title;
+  // The program the path was read from, block for block, or null for a path
+  // made here (generate, pencil). Shared: derived paths point at the same
+  // source, and copying a path does not copy its program.
+  std::shared_ptr<const Program> program;
 };
 
 // One past the last pose of the cutting run that starts at pose `first`:
@@ -72,12 +90,13 @@ inline size_t RunEnd(const ToolPath& path, size_t first) {
   return end;
 }
 
-// `path` without its poses, cutter and title kept: where a derived path
-// starts, without first copying every pose of the original.
+// `path` without its poses, cutter, title and program kept: where a derived
+// path starts, without first copying every pose of the original.
 inline ToolPath WithoutPoses(const ToolPath& path) {
   ToolPath out;
   out.cutter = path.cutter;
   out.title = path.title;
+  out.program = path.program;
   return out;
 }
 
