@@ -16,12 +16,11 @@
 #ifndef TPOPT_MODEL_APT_IO_H_
 #define TPOPT_MODEL_APT_IO_H_
 
+#include <Eigen/Core>
 #include <array>
 #include <istream>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "model/status.h"
 #include "model/tool_path.h"
@@ -33,11 +32,12 @@ namespace tpopt {
 // Inf or |v| > 1e6, a GOTO with other than 3 or 6 numbers, a zero tool axis,
 // UNITS other than MM, a `$` continuation cut off by the end of file, or no
 // GOTO at all. Non-unit axes are normalised.
-Status ReadApt(const std::string& path, ToolPath* tool_path, std::vector<std::string>* warnings);
+Status ReadApt(const std::string& path, ToolPath* tool_path,
+               std::vector<std::string>* warnings);
 
 // The same from an open stream; `name` stands for the file in messages.
-Status ReadAptStream(std::istream& in, const std::string& name, ToolPath* tool_path,
-                     std::vector<std::string>* warnings);
+Status ReadAptStream(std::istream& in, const std::string& name,
+                     ToolPath* tool_path, std::vector<std::string>* warnings);
 
 // A cubic span of the tip path, mm in W, for controllers with spline
 // interpolation. It is written right after the GOTO of pose `after_pose`
@@ -60,7 +60,8 @@ struct AptCurveSpan {
 // END-OF-PATH and FINI. Read back, tips agree within 1e-6 mm and axes
 // within 1e-9.
 // `spans` (sorted by after_pose) are written as NURBS records.
-std::string FormatApt(const ToolPath& tool_path, const std::vector<AptCurveSpan>& spans = {});
+std::string FormatApt(const ToolPath& tool_path,
+                      const std::vector<AptCurveSpan>& spans = {});
 
 // Writes FormatApt atomically (model/atomic_file.h). Refuses, writing
 // nothing, a path ReadApt would reject: no poses, or a pose (named by its
@@ -68,6 +69,25 @@ std::string FormatApt(const ToolPath& tool_path, const std::vector<AptCurveSpan>
 // zero axis; or a span after no pose, out of order, or not finite.
 Status WriteApt(const std::string& path, const ToolPath& tool_path,
                 const std::vector<AptCurveSpan>& spans = {});
+
+// The APT program `input` was read from (input.program), written back with
+// `output`, a path smoothed from `input`, laid into it (SpliceProgram): every
+// record and comment line as it was, in order, and each replaced cutting
+// move as GOTO/x,y,z,i,j,k in its record's units (6 decimals of mm or 7 of
+// inch, 9 of the axis), after FEDRAT/MMPM|IPM when its feed differs from the
+// one in effect; the source's feed is restored before the next record
+// written as it was. `spans` go after the GOTO of their pose, as in
+// FormatApt. A path that was not smoothed comes back byte for byte. Fails
+// as SpliceProgram does, naming the line.
+Status FormatAptProgram(const ToolPath& input, const ToolPath& output,
+                        const std::vector<AptCurveSpan>& spans,
+                        std::string* text);
+
+// Writes FormatAptProgram atomically, after the checks of WriteApt; errors
+// name `path`.
+Status WriteAptProgram(const std::string& path, const ToolPath& input,
+                       const ToolPath& output,
+                       const std::vector<AptCurveSpan>& spans = {});
 
 }  // namespace tpopt
 

@@ -85,7 +85,9 @@ struct ProgramItem {
 // Lays the poses of `output`, a path smoothed from `input` (read with
 // `program`), into the program's blocks, in order:
 //  - a block without a pose, and a verbatim move, is written as it was (a
-//    verbatim move's pose must be in `output` unchanged);
+//    verbatim move's pose must be in `output` unchanged); held poses of no
+//    block just before a verbatim move are points a reader made along it
+//    (an arc, a spline: the move is more than one pose) and are skipped;
 //  - a replaceable move whose pose `output` holds unchanged (position, axis,
 //    feed) is written as it was too, so a path that was not smoothed comes
 //    back text for text;

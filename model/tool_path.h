@@ -48,6 +48,9 @@ struct ToolPose {
   // Index of the block of ToolPath::program this pose is the move of; -1
   // for a pose a method made (or a path with no program).
   int source_block = -1;
+  // Index into ToolPath::tools of the tool that makes this move; -1 when
+  // the source loads none.
+  int tool = -1;
 };
 
 // True when the move into `pose` is kept as programmed (a rapid, a link or a
@@ -70,10 +73,27 @@ inline ToolPose Derived(ToolPose pose) {
   return pose;
 }
 
+// A tool as the source program defines it (TLDATA/CUTTER, LOAD/TOOL).
+struct ToolRecord {
+  // The tool number of LOAD/TOOL or LOADTL; 0 when none was given.
+  int number = 0;
+  // Diameter (as radius_mm) and flute length, when the source gives them.
+  std::optional<Cutter> cutter;
+  // Corner radius, mm (TLDATA/MILL,d,r / CUTTER/d,r), in [0, radius]. Kept
+  // for the program; the flank model takes the cutter as sharp-cornered.
+  double corner_radius_mm = 0.0;
+  // 1-based line of the record that defined the tool.
+  int source_line = 0;
+};
+
 struct ToolPath {
   std::vector<ToolPose> poses;
-  // The cutter named by the source (TLDATA/CUTTER), if any.
+  // The cutter named by the source (TLDATA/CUTTER), if any: with several
+  // tools, the one of the first feed move.
   std::optional<Cutter> cutter;
+  // Every tool the source loads, in order (a tool loaded twice is listed
+  // twice); ToolPose::tool indexes it.
+  std::vector<ToolRecord> tools;
   // Free text carried through to outputs (e.g. the generator's settings).
   std::string title;
   // The program the path was read from, block for block, or null for a path
@@ -95,6 +115,7 @@ inline size_t RunEnd(const ToolPath& path, size_t first) {
 inline ToolPath WithoutPoses(const ToolPath& path) {
   ToolPath out;
   out.cutter = path.cutter;
+  out.tools = path.tools;
   out.title = path.title;
   out.program = path.program;
   return out;
