@@ -147,3 +147,8 @@ DEFINE_string(curve, "", "pencil: planar guide curves JSON (kind planar_curves).
 DEFINE_double(ball_radius, 1.5, "pencil: ball-end cutter radius, mm.");
 DEFINE_double(interpolation_period_ms, 8.0,
               "pencil: interpolation period, ms; CC points are feed x period apart.");
+
+DEFINE_string(part_setup, "",
+              "evaluate, smooth: where an APT program's part frame sits on the table, "
+              "tx,ty,tz,rx,ry,rz (mm, deg): p_table = Rz Ry Rx p_part + t. Empty: the "
+              "program's frame is the table's. APT output is written back in the part frame.");

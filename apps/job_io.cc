@@ -10,6 +10,7 @@
 #include "model/apt_io.h"
 #include "model/gcode_io.h"
 #include "model/json_io.h"
+#include "model/part_setup.h"
 
 namespace tpopt {
 namespace {
@@ -62,9 +63,31 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
 }
 
 Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
-                    const std::vector<AptCurveSpan>& spans) {
+                    const std::vector<AptCurveSpan>& spans, const ToolPath* source) {
   const std::string ext = Extension(path);
-  if (IsApt(ext)) return WriteApt(path, tool_path, spans);
+  if (IsApt(ext)) {
+    PartSetup setup;
+    Status s = PartSetupFromFlag(&setup);
+    if (!s.ok()) return s;
+    const bool program = source != nullptr && tool_path.program != nullptr &&
+                         tool_path.program->format == ProgramFormat::kApt;
+    if (setup.IsIdentity()) {
+      return program ? WriteAptProgram(path, *source, tool_path, spans)
+                     : WriteApt(path, tool_path, spans);
+    }
+    // Back into the program's own frame, the source (which the kept moves
+    // are compared with) as the output.
+    ToolPath out = tool_path;
+    UnplacePart(setup, &out);
+    std::vector<AptCurveSpan> out_spans = spans;
+    for (AptCurveSpan& span : out_spans) {
+      for (Eigen::Vector3d& q : span.bezier) q = UnplacePoint(setup, q);
+    }
+    if (!program) return WriteApt(path, out, out_spans);
+    ToolPath in = *source;
+    UnplacePart(setup, &in);
+    return WriteAptProgram(path, in, out, out_spans);
+  }
   if (!IsGcode(ext)) return UnknownFormat(path, ext);
   GcodeOptions options;
   options.style = StyleOf(FLAGS_gcode_style);
@@ -73,6 +96,17 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
   options.postamble = FLAGS_gcode_postamble;
   options.default_feed_mm_per_min = FLAGS_feed;
   return WriteGcode(path, tool_path, machine, options);
+}
+
+Status PartSetupFromFlag(PartSetup* setup) {
+  *setup = PartSetup();
+  if (FLAGS_part_setup.empty()) return Status::Ok();
+  return ParsePartSetup(FLAGS_part_setup, setup);
+}
+
+Status CheckPartSetupFlag() {
+  PartSetup setup;
+  return PartSetupFromFlag(&setup);
 }
 
 Status LoadMachine(const std::string& path, Machine* machine) {
@@ -109,6 +143,17 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   job->has_surface = !FLAGS_surface.empty();
   Status s = LoadMachine(FLAGS_machine, &job->machine);
   if (s.ok()) s = LoadToolPath(FLAGS_in, job->machine, quiet, &job->path);
+  PartSetup setup;
+  if (s.ok()) s = PartSetupFromFlag(&setup);
+  if (s.ok() && !setup.IsIdentity()) {
+    if (job->path.program == nullptr || job->path.program->format != ProgramFormat::kApt) {
+      s = Status::Error(FLAGS_in +
+                        ": --part_setup places APT programs; a G-code program's X Y Z are "
+                        "already the machine's (tcp: the table's frame, joint: the joints)");
+    } else {
+      PlacePart(setup, &job->path);
+    }
+  }
   if (s.ok()) MarkLinkMoves(links, &job->path);
   if (s.ok() && job->has_surface) s = ReadSurfaceJson(FLAGS_surface, &job->surface);
   if (s.ok()) {

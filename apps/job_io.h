@@ -11,6 +11,7 @@
 #include "model/cutter.h"
 #include "model/link_moves.h"
 #include "model/machine.h"
+#include "model/part_setup.h"
 #include "model/ruled_surface.h"
 #include "model/status.h"
 #include "model/tool_path.h"
@@ -25,9 +26,18 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
 
 // Writes a tool path by its extension (as LoadToolPath), whole or not at
 // all; G-code follows the --gcode_* flags. Curve spans go into APT files as
-// NURBS records; G-code gets the poses only.
+// NURBS records; G-code gets the poses only. A path read from an APT
+// program and written as APT is that program record for record
+// (WriteAptProgram), given `source`, the path as read; APT is written in
+// the part's frame (--part_setup undone).
 Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
-                    const std::vector<AptCurveSpan>& spans = {});
+                    const std::vector<AptCurveSpan>& spans = {},
+                    const ToolPath* source = nullptr);
+
+// --part_setup (model/part_setup.h); empty is the identity. Errors are
+// usage errors; CheckPartSetupFlag checks it before a run.
+Status PartSetupFromFlag(PartSetup* setup);
+Status CheckPartSetupFlag();
 
 // The machine file, or without one an ideal A/C table at the origin with
 // no limits (A/C metrics are exact; X/Y/Z are relative to that pivot).
@@ -40,7 +50,8 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
                      double flute_flag_mm, Cutter* cutter);
 
 // Everything a subcommand reads, loaded from --in, --surface, --machine,
-// --cutter_radius and --flute_length.
+// --cutter_radius, --flute_length and --part_setup (APT programs are placed
+// on the table: their poses are in the machine's workpiece frame).
 struct Job {
   ToolPath path;
   RuledSurface surface;

@@ -42,7 +42,7 @@ void ReportProgressTo(ProgressDisplay* progress, SmoothingSettings* settings) {
 // B-spline `spans`), the report and the pictures of the result.
 Status WriteOutputs(const Invocation& invocation, const Job& job, const SmoothingResult& result,
                     const ToolPath& written, const std::vector<AptCurveSpan>& spans) {
-  Status s = SaveToolPath(FLAGS_out, job.machine, written, spans);
+  Status s = SaveToolPath(FLAGS_out, job.machine, written, spans, &job.path);
   if (s.ok() && !FLAGS_report.empty()) {
     s = WriteReport(FLAGS_report, SmoothReportJson(invocation, FLAGS_mode, result));
   }
@@ -89,6 +89,7 @@ int RunSmooth(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
   if (s.ok()) s = Require(FLAGS_out, "out");
   if (s.ok()) s = CheckGcodeFlags();
+  if (s.ok()) s = CheckPartSetupFlag();
   if (s.ok()) s = CheckPictureFlags();
   if (s.ok() && FLAGS_mode != "spline" && FLAGS_mode != "high_accuracy") {
     s = Status::Error("--mode=" + FLAGS_mode + " must be spline or high_accuracy");

@@ -10,9 +10,10 @@ namespace {
 // Smoothing copies the poses it keeps; anything beyond round-off is a move.
 bool SamePose(const ToolPose& a, const ToolPose& b) {
   constexpr double kSame = 1e-12;
+  // A rapid's feed is the machine's, whatever a feed planner assigns it.
   return (a.p_w_tip - b.p_w_tip).norm() <= kSame &&
-         (a.a_w - b.a_w).norm() <= kSame &&
-         a.feed_mm_per_min == b.feed_mm_per_min && a.rapid == b.rapid;
+         (a.a_w - b.a_w).norm() <= kSame && a.rapid == b.rapid &&
+         (a.rapid || a.feed_mm_per_min == b.feed_mm_per_min);
 }
 
 Status Misfit(const Program& program, const ProgramBlock& block,
