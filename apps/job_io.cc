@@ -18,8 +18,7 @@ namespace {
 std::string Extension(const std::string& path) {
   const size_t dot = path.find_last_of('.');
   const size_t slash = path.find_last_of('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return "";
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
   std::string ext = path.substr(dot + 1);
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
   return ext;
@@ -27,14 +26,11 @@ std::string Extension(const std::string& path) {
 
 double LongestRulingMm(const RuledSurface& surface) {
   double longest = 0.0;
-  for (int i = 0; i <= 100; ++i)
-    longest = std::max(longest, surface.Dv(i / 100.0).norm());
+  for (int i = 0; i <= 100; ++i) longest = std::max(longest, surface.Dv(i / 100.0).norm());
   return longest;
 }
 
-bool IsApt(const std::string& ext) {
-  return ext == "cls" || ext == "apt" || ext == "cl";
-}
+bool IsApt(const std::string& ext) { return ext == "cls" || ext == "apt" || ext == "cl"; }
 bool IsGcode(const std::string& ext) { return ext == "ngc" || ext == "nc"; }
 
 Status UnknownFormat(const std::string& path, const std::string& ext) {
@@ -56,22 +52,18 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
   if (IsApt(ext)) {
     s = ReadApt(path, tool_path, &warnings);
   } else if (IsGcode(ext)) {
-    s = ReadGcode(path, machine, StyleOf(FLAGS_gcode_in_style), tool_path,
-                  &warnings);
+    s = ReadGcode(path, machine, StyleOf(FLAGS_gcode_in_style), tool_path, &warnings);
   } else {
     return UnknownFormat(path, ext);
   }
   if (!quiet) {
-    for (const std::string& w : warnings)
-      std::fprintf(stderr, "warning: %s\n", w.c_str());
+    for (const std::string& w : warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
   }
   return s;
 }
 
-Status SaveToolPath(const std::string& path, const Machine& machine,
-                    const ToolPath& tool_path,
-                    const std::vector<AptCurveSpan>& spans,
-                    const ToolPath* source) {
+Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
+                    const std::vector<AptCurveSpan>& spans, const ToolPath* source) {
   const std::string ext = Extension(path);
   if (IsApt(ext)) {
     PartSetup setup;
@@ -126,23 +118,42 @@ Status LoadMachine(const std::string& path, Machine* machine) {
   return ReadMachineJson(path, machine);
 }
 
-Status ResolveCutter(const ToolPath& path, const RuledSurface* surface,
-                     double radius_flag_mm, double flute_flag_mm,
-                     Cutter* cutter) {
+Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
+                     double flute_flag_mm, Cutter* cutter) {
+  // Deviation from a surface takes one cutter for the whole path: a
+  // program that cuts with tools of other sizes would be judged with the
+  // wrong one.
+  if (surface != nullptr && radius_flag_mm == 0.0) {
+    const ToolRecord* first = nullptr;
+    for (const ToolPose& p : path.poses) {
+      if (p.rapid || p.tool < 0 || !path.tools[p.tool].cutter) continue;
+      const ToolRecord& t = path.tools[p.tool];
+      if (first == nullptr) first = &t;
+      if (t.cutter->radius_mm != first->cutter->radius_mm ||
+          t.cutter->flute_length_mm != first->cutter->flute_length_mm) {
+        char buf[256];
+        std::snprintf(buf, sizeof(buf),
+                      "the program cuts with tool %d (line %d, D %g mm) and tool %d (line %d, D "
+                      "%g mm); deviation from a surface takes one cutter: evaluate each tool's "
+                      "moves on their own, or give --cutter_radius",
+                      first->number, first->source_line, 2 * first->cutter->radius_mm, t.number,
+                      t.source_line, 2 * t.cutter->radius_mm);
+        return Status::Error(buf);
+      }
+    }
+  }
   Cutter c;
   const bool have_file = path.cutter.has_value();
   if (have_file) c = *path.cutter;
   if (radius_flag_mm != 0.0) {
     c.radius_mm = radius_flag_mm;
   } else if (!have_file) {
-    return Status::Error(
-        "the path names no cutter (TLDATA/CUTTER): give --cutter_radius");
+    return Status::Error("the path names no cutter (TLDATA/CUTTER): give --cutter_radius");
   }
   if (flute_flag_mm != 0.0) {
     c.flute_length_mm = flute_flag_mm;
   } else if (!have_file) {
-    c.flute_length_mm =
-        surface != nullptr ? 1.25 * LongestRulingMm(*surface) : 100.0;
+    c.flute_length_mm = surface != nullptr ? 1.25 * LongestRulingMm(*surface) : 100.0;
   }
   Status s = c.Validate("cutter");
   if (!s.ok()) return s;
@@ -157,22 +168,19 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   PartSetup setup;
   if (s.ok()) s = PartSetupFromFlag(&setup);
   if (s.ok() && !setup.IsIdentity()) {
-    if (job->path.program == nullptr ||
-        job->path.program->format != ProgramFormat::kApt) {
-      s = Status::Error(
-          FLAGS_in +
-          ": --part_setup places APT programs; a G-code program's X Y Z are "
-          "already the machine's (tcp: the table's frame, joint: the joints)");
+    if (job->path.program == nullptr || job->path.program->format != ProgramFormat::kApt) {
+      s = Status::Error(FLAGS_in +
+                        ": --part_setup places APT programs; a G-code program's X Y Z are "
+                        "already the machine's (tcp: the table's frame, joint: the joints)");
     } else {
       PlacePart(setup, &job->path);
     }
   }
   if (s.ok()) MarkLinkMoves(links, &job->path);
-  if (s.ok() && job->has_surface)
-    s = ReadSurfaceJson(FLAGS_surface, &job->surface);
+  if (s.ok() && job->has_surface) s = ReadSurfaceJson(FLAGS_surface, &job->surface);
   if (s.ok()) {
-    s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius,
-                      FLAGS_flute_length, &job->cutter);
+    s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius, FLAGS_flute_length,
+                      &job->cutter);
     if (!s.ok()) s = Status::Error(FLAGS_in + ": " + s.message());
   }
   return s;
@@ -183,8 +191,7 @@ Status CheckGcodeFlags() {
        {std::pair<const char*, std::string>{"gcode_style", FLAGS_gcode_style},
         {"gcode_in_style", FLAGS_gcode_in_style}}) {
     if (value != "tcp" && value != "joint") {
-      return Status::Error(std::string("--") + name + "=" + value +
-                           " must be tcp or joint");
+      return Status::Error(std::string("--") + name + "=" + value + " must be tcp or joint");
     }
   }
   return Status::Ok();
@@ -194,12 +201,10 @@ Status CheckOutputFolders(const std::vector<std::string>& paths) {
   for (const std::string& path : paths) {
     if (path.empty()) continue;
     const size_t slash = path.find_last_of('/');
-    const std::string folder =
-        slash == std::string::npos ? "." : path.substr(0, slash + 1);
+    const std::string folder = slash == std::string::npos ? "." : path.substr(0, slash + 1);
     struct stat info;
     if (stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) {
-      return Status::Error(path + ": cannot write: folder '" + folder +
-                           "' does not exist");
+      return Status::Error(path + ": cannot write: folder '" + folder + "' does not exist");
     }
   }
   return Status::Ok();

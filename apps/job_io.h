@@ -30,8 +30,7 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
 // program and written as APT is that program record for record
 // (WriteAptProgram), given `source`, the path as read; APT is written in
 // the part's frame (--part_setup undone).
-Status SaveToolPath(const std::string& path, const Machine& machine,
-                    const ToolPath& tool_path,
+Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
                     const std::vector<AptCurveSpan>& spans = {},
                     const ToolPath* source = nullptr);
 
@@ -47,9 +46,8 @@ Status LoadMachine(const std::string& path, Machine* machine);
 // The cutter: --cutter_radius / --flute_length when set, else the path's
 // TLDATA/CUTTER; a path without one needs --cutter_radius. Without a flute
 // length anywhere, 1.25 x the surface's longest ruling (or 100 mm).
-Status ResolveCutter(const ToolPath& path, const RuledSurface* surface,
-                     double radius_flag_mm, double flute_flag_mm,
-                     Cutter* cutter);
+Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
+                     double flute_flag_mm, Cutter* cutter);
 
 // Everything a subcommand reads, loaded from --in, --surface, --machine,
 // --cutter_radius, --flute_length and --part_setup (APT programs are placed
@@ -60,9 +58,7 @@ struct Job {
   bool has_surface = false;
   Machine machine;
   Cutter cutter;
-  const RuledSurface* surface_or_null() const {
-    return has_surface ? &surface : nullptr;
-  }
+  const RuledSurface* surface_or_null() const { return has_surface ? &surface : nullptr; }
 };
 
 // Loads a Job from the flags, its links marked by `links`; errors name the

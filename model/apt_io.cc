@@ -23,8 +23,7 @@ namespace {
 constexpr double kMaxMagnitude = 1e6;
 
 // s[begin, end) without the white space at its ends.
-std::string Trim(const std::string& s, size_t begin = 0,
-                 size_t end = std::string::npos) {
+std::string Trim(const std::string& s, size_t begin = 0, size_t end = std::string::npos) {
   end = std::min(end, s.size());
   const size_t b = s.find_first_not_of(" \t\r\n", begin);
   if (b == std::string::npos || b >= end) return "";
@@ -48,8 +47,7 @@ void TrimInPlace(std::string* s) {
 // exponent). strtod alone would also take "0x1A", "nan" and "inf", none of
 // which is a coordinate.
 bool ParseDecimal(const std::string& text, double* out) {
-  if (text.empty() ||
-      text.find_first_not_of("0123456789+-.eE") != std::string::npos) {
+  if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string::npos) {
     return false;
   }
   char* end = nullptr;
@@ -58,8 +56,7 @@ bool ParseDecimal(const std::string& text, double* out) {
 }
 
 std::string Upper(std::string s) {
-  for (char& c : s)
-    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return s;
 }
 
@@ -116,8 +113,7 @@ constexpr double kMmPerInch = 25.4;
 // tpopt's own span record (AptCurveSpan): degree 3, 4 points, clamped
 // knots, then 4 x (x, y, z, 1).
 bool IsTpoptSpan(const Statement& st) {
-  static const char* kHead[] = {"3", "4", "0", "0", "0",
-                                "0", "1", "1", "1", "1"};
+  static const char* kHead[] = {"3", "4", "0", "0", "0", "0", "1", "1", "1", "1"};
   if (st.args.size() != 26) return false;
   for (size_t k = 0; k < 10; ++k) {
     double v = 0.0, want = std::atof(kHead[k]);
@@ -128,8 +124,7 @@ bool IsTpoptSpan(const Statement& st) {
 
 class AptReader {
  public:
-  AptReader(const std::string& name, ToolPath* path,
-            std::vector<std::string>* warnings)
+  AptReader(const std::string& name, ToolPath* path, std::vector<std::string>* warnings)
       : name_(name), path_(path), warnings_(warnings) {
     program_.format = ProgramFormat::kApt;
     program_.file = name;
@@ -168,13 +163,20 @@ class AptReader {
       raw.clear();
     }
     if (!text.empty()) {
-      return Error(first_line,
-                   "statement continued with '$' but the file ends");
+      return Error(first_line, "statement continued with '$' but the file ends");
     }
     Status s = FinishCurve();
     if (!s.ok()) return s;
-    if (path_->poses.empty())
-      return Status::Error(name_ + ": no GOTO: the path is empty");
+    if (path_->poses.empty()) return Status::Error(name_ + ": no GOTO: the path is empty");
+    // Inch coordinates within range may not be, in mm; nor the points of an
+    // arc or curve.
+    for (const ToolPose& p : path_->poses) {
+      if (!(p.p_w_tip.cwiseAbs().maxCoeff() <= kMaxMagnitude)) {
+        std::ostringstream err;
+        err << "a move to (" << p.p_w_tip.transpose() << ") mm is out of range (|v| <= 1e6 mm)";
+        return Error(p.source_line, err.str());
+      }
+    }
     if (!path_->tools.empty()) {
       // The cutter a caller takes for the whole path: the one of the first
       // feed move (a program may load its tool before a rapid).
@@ -185,8 +187,7 @@ class AptReader {
           break;
         }
       }
-      if (first >= 0 && path_->tools[first].cutter)
-        path_->cutter = path_->tools[first].cutter;
+      if (first >= 0 && path_->tools[first].cutter) path_->cutter = path_->tools[first].cutter;
     }
     path_->program = std::make_shared<const Program>(std::move(program_));
     return Status::Ok();
@@ -197,9 +198,7 @@ class AptReader {
     return Status::Error(name_ + ":" + std::to_string(line) + ": " + what);
   }
 
-  std::string Where(int line) const {
-    return name_ + ":" + std::to_string(line);
-  }
+  std::string Where(int line) const { return name_ + ":" + std::to_string(line); }
 
   void AddBlock(int line, const std::string& raw) {
     ProgramBlock block;
@@ -213,12 +212,12 @@ class AptReader {
   Status Number(const Statement& st, size_t k, double* out) const {
     const std::string& a = st.args[k];
     if (!ParseDecimal(a, out)) {
-      return Error(st.line, st.word + " argument " + std::to_string(k + 1) +
-                                " '" + a + "' is not a number");
+      return Error(st.line,
+                   st.word + " argument " + std::to_string(k + 1) + " '" + a + "' is not a number");
     }
     if (!std::isfinite(*out) || std::abs(*out) > kMaxMagnitude) {
-      return Error(st.line, st.word + " argument " + std::to_string(k + 1) +
-                                " '" + a + "' is out of range (|v| <= 1e6)");
+      return Error(st.line, st.word + " argument " + std::to_string(k + 1) + " '" + a +
+                                "' is out of range (|v| <= 1e6)");
     }
     return Status::Ok();
   }
@@ -240,8 +239,7 @@ class AptReader {
     if (path_->poses.empty()) return;
     ToolPose& last = path_->poses.back();
     last.held = true;
-    if (last.source_block >= 0)
-      program_.blocks[last.source_block].replaceable = false;
+    if (last.source_block >= 0) program_.blocks[last.source_block].replaceable = false;
   }
 
   ToolPose NewPose(const Eigen::Vector3d& p_w_tip, int line) const {
@@ -258,8 +256,8 @@ class AptReader {
   // including) its end: held, and named by no block (the records are
   // written back as they were). The axis turns linearly from the last
   // pose's to `end_axis`.
-  void AddCurvePoints(const std::vector<Eigen::Vector3d>& points,
-                      const Eigen::Vector3d& end_axis, int line) {
+  void AddCurvePoints(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& end_axis,
+                      int line) {
     const Eigen::Vector3d start_axis = path_->poses.back().a_w;
     for (size_t k = 0; k + 1 < points.size(); ++k) {
       const double t = static_cast<double>(k + 1) / points.size();
@@ -272,8 +270,7 @@ class AptReader {
 
   Status Goto(const Statement& st) {
     if (st.args.size() != 3 && st.args.size() != 6) {
-      return Error(st.line, "GOTO needs 3 or 6 numbers, got " +
-                                std::to_string(st.args.size()));
+      return Error(st.line, "GOTO needs 3 or 6 numbers, got " + std::to_string(st.args.size()));
     }
     std::vector<double> v;
     Status s = Numbers(st, &v);
@@ -281,23 +278,20 @@ class AptReader {
     if (st.args.size() == 6) {
       const Eigen::Vector3d a(v[3], v[4], v[5]);
       if (!(a.norm() > 1e-9)) {
-        return Error(st.line, "zero-length tool axis (" + st.args[3] + ", " +
-                                  st.args[4] + ", " + st.args[5] + ")");
+        return Error(st.line, "zero-length tool axis (" + st.args[3] + ", " + st.args[4] + ", " +
+                                  st.args[5] + ")");
       }
       axis_ = a.normalized();
     }
-    const Eigen::Vector3d tip =
-        mm_per_unit_ * Eigen::Vector3d(v[0], v[1], v[2]);
+    const Eigen::Vector3d tip = mm_per_unit_ * Eigen::Vector3d(v[0], v[1], v[2]);
     ProgramBlock& block = program_.blocks.back();
     if (circle_) {
-      if (path_->poses.empty())
-        return Error(circle_line_, "CIRCLE has no start point (GOTO)");
+      if (path_->poses.empty()) return Error(circle_line_, "CIRCLE has no start point (GOTO)");
       std::vector<Eigen::Vector3d> points;
-      s = ArcPoints(*circle_, path_->poses.back().p_w_tip, tip, kCurveChordMm,
-                    kCurveFitMm,
-                    Where(circle_line_) + " (CIRCLE ending at line " +
-                        std::to_string(st.line) + ")",
-                    &points);
+      s = ArcPoints(
+          *circle_, path_->poses.back().p_w_tip, tip, kCurveChordMm, kCurveFitMm,
+          Where(circle_line_) + " (CIRCLE ending at line " + std::to_string(st.line) + ")",
+          &points);
       if (!s.ok()) return s;
       AddCurvePoints(points, axis_, circle_line_);
     }
@@ -321,9 +315,8 @@ class AptReader {
   // counter-clockwise about (i, j, k); NX adds tolerance and tool data.
   Status Circle(const Statement& st) {
     if (st.args.size() < 7) {
-      return Error(st.line,
-                   "CIRCLE needs centre, axis and radius (7 numbers), got " +
-                       std::to_string(st.args.size()));
+      return Error(st.line, "CIRCLE needs centre, axis and radius (7 numbers), got " +
+                                std::to_string(st.args.size()));
     }
     double v[7];
     for (size_t k = 0; k < 7; ++k) {
@@ -335,12 +328,10 @@ class AptReader {
     arc.axis = Eigen::Vector3d(v[3], v[4], v[5]);
     arc.radius_mm = mm_per_unit_ * v[6];
     if (!(arc.axis.norm() > 1e-9) || !(arc.radius_mm > 0)) {
-      return Error(st.line, "CIRCLE axis (" + st.args[3] + ", " + st.args[4] +
-                                ", " + st.args[5] + ") or radius " +
-                                st.args[6] + " is zero");
+      return Error(st.line, "CIRCLE axis (" + st.args[3] + ", " + st.args[4] + ", " + st.args[5] +
+                                ") or radius " + st.args[6] + " is zero");
     }
-    if (path_->poses.empty())
-      return Error(st.line, "CIRCLE has no start point (GOTO)");
+    if (path_->poses.empty()) return Error(st.line, "CIRCLE has no start point (GOTO)");
     HoldLastPose();
     circle_ = arc;
     circle_line_ = st.line;
@@ -358,11 +349,10 @@ class AptReader {
       return Status::Ok();
     }
     if (v.size() != 3 && v.size() != 4) {
-      return Error(st.line, "CNTRL needs x,y,z[,w] (3 or 4 numbers), got " +
-                                std::to_string(v.size()));
+      return Error(st.line,
+                   "CNTRL needs x,y,z[,w] (3 or 4 numbers), got " + std::to_string(v.size()));
     }
-    curve_->control_points.push_back(mm_per_unit_ *
-                                     Eigen::Vector3d(v[0], v[1], v[2]));
+    curve_->control_points.push_back(mm_per_unit_ * Eigen::Vector3d(v[0], v[1], v[2]));
     curve_->weights.push_back(v.size() == 4 ? v[3] : 1.0);
     curve_end_block_ = static_cast<int>(program_.blocks.size()) - 1;
     return Status::Ok();
@@ -376,9 +366,8 @@ class AptReader {
     const int n = static_cast<int>(curve.control_points.size());
     curve.degree = static_cast<int>(curve.knots.size()) - n - 1;
     if (n < 2 || curve.degree < 1) {
-      return Status::Error(what + ": " + std::to_string(curve.knots.size()) +
-                           " knots and " + std::to_string(n) +
-                           " control points (CNTRL) make no curve");
+      return Status::Error(what + ": " + std::to_string(curve.knots.size()) + " knots and " +
+                           std::to_string(n) + " control points (CNTRL) make no curve");
     }
     std::vector<Eigen::Vector3d> points;
     Status s = RationalCurvePoints(curve, kCurveChordMm, what, &points);
@@ -386,25 +375,22 @@ class AptReader {
     const Eigen::Vector3d start = RationalCurvePoint(curve, 0.0);
     if ((start - path_->poses.back().p_w_tip).norm() > kCurveFitMm) {
       std::ostringstream err;
-      err << what << ": the curve starts at ("
-          << start.transpose() / mm_per_unit_ << "), not where the tool is ("
-          << path_->poses.back().p_w_tip.transpose() / mm_per_unit_ << ")";
+      err << what << ": the curve starts at (" << start.transpose() / mm_per_unit_
+          << "), not where the tool is (" << path_->poses.back().p_w_tip.transpose() / mm_per_unit_
+          << ")";
       return Status::Error(err.str());
     }
     AddCurvePoints(points, axis_, curve_line_);
-    ToolPose end =
-        NewPose(points.back(), program_.blocks[curve_end_block_].line);
+    ToolPose end = NewPose(points.back(), program_.blocks[curve_end_block_].line);
     end.held = true;
     end.source_block = curve_end_block_;
-    program_.blocks[curve_end_block_].pose =
-        static_cast<int>(path_->poses.size());
+    program_.blocks[curve_end_block_].pose = static_cast<int>(path_->poses.size());
     path_->poses.push_back(end);
     return Status::Ok();
   }
 
   Status Tool(const Statement& st, size_t first_number) {
-    if (st.args.size() <= first_number)
-      return Error(st.line, st.word + " has no diameter");
+    if (st.args.size() <= first_number) return Error(st.line, st.word + " has no diameter");
     ToolRecord tool;
     tpopt::Cutter cutter;
     double d = 0.0;
@@ -423,10 +409,8 @@ class AptReader {
     }
     s = cutter.Validate(Where(st.line));
     if (!s.ok()) return s;
-    if (!(tool.corner_radius_mm >= 0 &&
-          tool.corner_radius_mm <= cutter.radius_mm)) {
-      return Error(st.line, st.word + " corner radius " +
-                                st.args[first_number + 1] +
+    if (!(tool.corner_radius_mm >= 0 && tool.corner_radius_mm <= cutter.radius_mm)) {
+      return Error(st.line, st.word + " corner radius " + st.args[first_number + 1] +
                                 " must be in [0, the cutter's radius]");
     }
     tool.cutter = cutter;
@@ -448,9 +432,8 @@ class AptReader {
   // LOAD/TOOL,n[,...] or LOADTL/n[,...].
   Status Load(const Statement& st, size_t number_arg) {
     double n = 0.0;
-    if (st.args.size() <= number_arg ||
-        !ParseDecimal(st.args[number_arg], &n) || n != std::floor(n) || n < 0 ||
-        n > 1e6) {
+    if (st.args.size() <= number_arg || !ParseDecimal(st.args[number_arg], &n) ||
+        n != std::floor(n) || n < 0 || n > 1e6) {
       return Error(st.line, st.word + " needs a tool number");
     }
     const int number = static_cast<int>(n);
@@ -483,8 +466,7 @@ class AptReader {
     for (size_t k = 0; k < st.args.size(); ++k) {
       const std::string word = Upper(st.args[k]);
       if (word == "IPR" || word == "MMPR") {
-        return Error(st.line, "FEDRAT unit " + word +
-                                  " (per revolution) is not supported");
+        return Error(st.line, "FEDRAT unit " + word + " (per revolution) is not supported");
       }
       if (word == "MMPM" || word == "IPM") {
         unit = word;
@@ -492,19 +474,16 @@ class AptReader {
         value = k;
       }
     }
-    if (value == st.args.size())
-      return Error(st.line, "FEDRAT has no feed value");
+    if (value == st.args.size()) return Error(st.line, "FEDRAT has no feed value");
     if (unit == "IPM" && !units_known_) SwitchToInch();  // NX: IPM and no UNITS
     if (!unit.empty() && (unit == "IPM") != (mm_per_unit_ != 1.0)) {
-      return Error(st.line, "FEDRAT/" + unit +
-                                " in a program whose units are " +
+      return Error(st.line, "FEDRAT/" + unit + " in a program whose units are " +
                                 (mm_per_unit_ != 1.0 ? "inches" : "mm"));
     }
     double f = 0.0;
     Status s = Number(st, value, &f);
     if (!s.ok()) return s;
-    if (!(f > 0))
-      return Error(st.line, "FEDRAT " + st.args[value] + " must be > 0");
+    if (!(f > 0)) return Error(st.line, "FEDRAT " + st.args[value] + " must be > 0");
     feed_ = f * mm_per_unit_;
     program_.blocks.back().modal_feed = f;
     return Status::Ok();
@@ -533,21 +512,18 @@ class AptReader {
   Status Units(const Statement& st) {
     const std::string unit = st.args.empty() ? "" : Upper(st.args[0]);
     if (unit == "MM") {
-      if (mm_per_unit_ != 1.0)
-        return Error(st.line, "UNITS/MM after inch records");
+      if (mm_per_unit_ != 1.0) return Error(st.line, "UNITS/MM after inch records");
       units_known_ = true;
       return Status::Ok();
     }
     if (unit == "INCHES" || unit == "INCH") {
       if (mm_per_unit_ == 1.0 && !path_->poses.empty()) {
-        return Error(st.line, "UNITS/" + st.args[0] +
-                                  " after the first GOTO (read in mm)");
+        return Error(st.line, "UNITS/" + st.args[0] + " after the first GOTO (read in mm)");
       }
       SwitchToInch();
       return Status::Ok();
     }
-    return Error(st.line, "UNITS/" +
-                              (st.args.empty() ? std::string() : st.args[0]) +
+    return Error(st.line, "UNITS/" + (st.args.empty() ? std::string() : st.args[0]) +
                               " is not supported (MM or INCHES)");
   }
 
@@ -560,10 +536,8 @@ class AptReader {
     }
     AddBlock(st.line, raw);
     if (circle_ && st.word != "GOTO") {
-      return Error(
-          circle_line_,
-          "CIRCLE is not followed by the GOTO to its end point (line " +
-              std::to_string(st.line) + " is " + st.word + ")");
+      return Error(circle_line_, "CIRCLE is not followed by the GOTO to its end point (line " +
+                                     std::to_string(st.line) + " is " + st.word + ")");
     }
     if (st.word == "GOTO") {
       load_waiting_ = geometry_waiting_ = false;
@@ -573,19 +547,27 @@ class AptReader {
       if (!curve_) return Error(st.line, st.word + " outside a NURBS curve");
       return CurveRecord(st);
     }
-    // Every other record breaks the run: the moves on both sides of it stay
-    // where the program put them.
-    HoldLastPose();
-    hold_next_ = true;
-    in_span_ = false;
+    // Every other record that can matter to the machine breaks the run:
+    // the moves on both sides of it stay where the program put them. Those
+    // that only label, set the feed (written again where a replaced move
+    // needs it) or mark the end change nothing there, and a RAPID's target
+    // is kept by itself (the cut into it may end elsewhere).
+    static const std::set<std::string> kNoMotion = {"FEDRAT",      "PAINT", "MULTAX", "TOOL PATH",
+                                                    "PARTNO",      "UNITS", "PPRINT", "MACHIN",
+                                                    "END-OF-PATH", "FINI",  "END",    "RAPID"};
+    if (kNoMotion.count(st.word) == 0 && !path_->poses.empty()) {
+      HoldLastPose();
+      hold_next_ = true;
+      in_span_ = false;
+    }
+    if (st.word == "RAPID") in_span_ = false;
     if (st.word == "CIRCLE") return Circle(st);
     if (st.word == "NURBS") {
       if (IsTpoptSpan(st)) {
         in_span_ = true;  // its GOTOs are its points, kept as written
         return Status::Ok();
       }
-      if (path_->poses.empty())
-        return Error(st.line, "NURBS has no start point (GOTO)");
+      if (path_->poses.empty()) return Error(st.line, "NURBS has no start point (GOTO)");
       curve_ = RationalCurve();
       curve_line_ = st.line;
       return Status::Ok();
@@ -593,8 +575,7 @@ class AptReader {
     if (st.word == "TLDATA") return Tool(st, 1);  // TLDATA/MILL,d,r,l
     if (st.word == "CUTTER") return Tool(st, 0);
     if (st.word == "LOADTL") return Load(st, 0);
-    if (st.word == "LOAD" && !st.args.empty() && Upper(st.args[0]) == "TOOL")
-      return Load(st, 1);
+    if (st.word == "LOAD" && !st.args.empty() && Upper(st.args[0]) == "TOOL") return Load(st, 1);
     if (st.word == "FEDRAT") return Feed(st);
     if (st.word == "UNITS") return Units(st);
     if (st.word == "RAPID") {
@@ -606,15 +587,12 @@ class AptReader {
       return Status::Ok();
     }
     static const std::set<std::string> kKnown = {
-        "MULTAX", "TOOL PATH", "PAINT",  "END-OF-PATH", "FINI",   "PARTNO",
-        "SPINDL", "COOLNT",    "CUTCOM", "INSERT",      "SELECT", "CSYS",
-        "MSYS",   "LOAD",      "STOP",   "OPSTOP",      "END",    "PPRINT",
-        "ORIGIN", "DELAY",     "MACHIN", "AUTO",        "CLRSRF", ""};
-    if (kKnown.count(st.word) == 0 && warned_.insert(st.word).second &&
-        warnings_) {
-      warnings_->push_back(
-          Where(st.line) + ": statement '" + st.word +
-          "' is not understood; passed through as written (warned once)");
+        "MULTAX", "TOOL PATH", "PAINT",  "END-OF-PATH", "FINI",   "PARTNO", "SPINDL", "COOLNT",
+        "CUTCOM", "INSERT",    "SELECT", "CSYS",        "MSYS",   "LOAD",   "STOP",   "OPSTOP",
+        "END",    "PPRINT",    "ORIGIN", "DELAY",       "MACHIN", "AUTO",   "CLRSRF", ""};
+    if (kKnown.count(st.word) == 0 && warned_.insert(st.word).second && warnings_) {
+      warnings_->push_back(Where(st.line) + ": statement '" + st.word +
+                           "' is not understood; passed through as written (warned once)");
     }
     return Status::Ok();
   }
@@ -628,25 +606,24 @@ class AptReader {
   double mm_per_unit_ = 1.0;  // 25.4 in inch
   bool units_known_ = false;  // a UNITS record, or an IPM feed, was read
   bool rapid_next_ = false;
-  bool hold_next_ = false;  // the next GOTO follows a run-breaking record
-  bool in_cycle_ = false;   // between CYCLE/... and CYCLE/OFF
-  bool in_span_ = false;    // after one of tpopt's own NURBS spans
+  bool hold_next_ = false;             // the next GOTO follows a run-breaking record
+  bool in_cycle_ = false;              // between CYCLE/... and CYCLE/OFF
+  bool in_span_ = false;               // after one of tpopt's own NURBS spans
   std::optional<CircularArc> circle_;  // a CIRCLE waiting for its GOTO
   int circle_line_ = 0;
   std::optional<RationalCurve> curve_;  // an NX NURBS being read
   int curve_line_ = 0;
   int curve_end_block_ = -1;
-  int tool_ = -1;              // index into ToolPath::tools of the current tool
-  bool load_waiting_ = false;  // it came from a LOAD, its geometry may follow
-  bool geometry_waiting_ =
-      false;  // it came from TLDATA/CUTTER, its LOAD may follow
+  int tool_ = -1;                  // index into ToolPath::tools of the current tool
+  bool load_waiting_ = false;      // it came from a LOAD, its geometry may follow
+  bool geometry_waiting_ = false;  // it came from TLDATA/CUTTER, its LOAD may follow
   std::set<std::string> warned_;
 };
 
 }  // namespace
 
-Status ReadAptStream(std::istream& in, const std::string& name,
-                     ToolPath* tool_path, std::vector<std::string>* warnings) {
+Status ReadAptStream(std::istream& in, const std::string& name, ToolPath* tool_path,
+                     std::vector<std::string>* warnings) {
   ToolPath path;
   AptReader reader(name, &path, warnings);
   Status s = reader.Read(in);
@@ -655,8 +632,7 @@ Status ReadAptStream(std::istream& in, const std::string& name,
   return Status::Ok();
 }
 
-Status ReadApt(const std::string& path, ToolPath* tool_path,
-               std::vector<std::string>* warnings) {
+Status ReadApt(const std::string& path, ToolPath* tool_path, std::vector<std::string>* warnings) {
   std::ifstream in(path);
   if (!in) return Status::Error(path + ": cannot open file");
   return ReadAptStream(in, path, tool_path, warnings);
@@ -676,17 +652,15 @@ std::string CommentLine(const std::string& title) {
 
 // What the reader would refuse: a written file must read back.
 Status CheckWritable(const std::string& path, const ToolPath& tool_path) {
-  if (tool_path.poses.empty())
-    return Status::Error(path + ": no poses to write");
+  if (tool_path.poses.empty()) return Status::Error(path + ": no poses to write");
   for (size_t i = 0; i < tool_path.poses.size(); ++i) {
     const ToolPose& p = tool_path.poses[i];
     const bool in_range = p.p_w_tip.allFinite() && p.a_w.allFinite() &&
                           p.p_w_tip.cwiseAbs().maxCoeff() <= kMaxMagnitude;
     if (!in_range || !(p.a_w.norm() > 1e-9)) {
       std::ostringstream err;
-      err << path << ": pose " << i << " cannot be written: tip ("
-          << p.p_w_tip.transpose() << ") mm, axis (" << p.a_w.transpose()
-          << ")";
+      err << path << ": pose " << i << " cannot be written: tip (" << p.p_w_tip.transpose()
+          << ") mm, axis (" << p.a_w.transpose() << ")";
       return Status::Error(err.str());
     }
   }
@@ -698,14 +672,11 @@ Status CheckSpans(const std::string& path, const ToolPath& tool_path,
   for (size_t k = 0; k < spans.size(); ++k) {
     bool finite = true;
     for (const Eigen::Vector3d& p : spans[k].bezier) {
-      finite =
-          finite && p.allFinite() && p.cwiseAbs().maxCoeff() <= kMaxMagnitude;
+      finite = finite && p.allFinite() && p.cwiseAbs().maxCoeff() <= kMaxMagnitude;
     }
-    const bool ordered =
-        k == 0 || spans[k].after_pose > spans[k - 1].after_pose;
+    const bool ordered = k == 0 || spans[k].after_pose > spans[k - 1].after_pose;
     if (!finite || !ordered || spans[k].after_pose >= tool_path.poses.size()) {
-      return Status::Error(path + ": curve span " + std::to_string(k) +
-                           " after pose " +
+      return Status::Error(path + ": curve span " + std::to_string(k) + " after pose " +
                            std::to_string(spans[k].after_pose) +
                            " cannot be written (out of order, past the last "
                            "pose or not finite)");
@@ -718,8 +689,7 @@ std::string NurbsRecord(const AptCurveSpan& span) {
   std::string out = "NURBS/3,4,0,0,0,0,1,1,1,1";
   char buf[128];
   for (const Eigen::Vector3d& p : span.bezier) {
-    std::snprintf(buf, sizeof(buf), ",$\n%.9f,%.9f,%.9f,1", p.x(), p.y(),
-                  p.z());
+    std::snprintf(buf, sizeof(buf), ",$\n%.9f,%.9f,%.9f,1", p.x(), p.y(), p.z());
     out += buf;
   }
   return out + "\n";
@@ -744,22 +714,18 @@ std::string GotoRecord(const ToolPose& p, double mm_per_unit) {
 std::string FeedRecord(double feed_per_min, double mm_per_unit) {
   char buf[64];
   // Ten digits: a scheduled feed reads back as written, not rounded.
-  std::snprintf(buf, sizeof(buf), "FEDRAT/%s,%.10g\n",
-                mm_per_unit == 1.0 ? "MMPM" : "IPM", feed_per_min);
+  std::snprintf(buf, sizeof(buf), "FEDRAT/%s,%.10g\n", mm_per_unit == 1.0 ? "MMPM" : "IPM",
+                feed_per_min);
   return buf;
 }
 
-bool SameFeed(double a, double b) {
-  return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b));
-}
+bool SameFeed(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(b)); }
 
 }  // namespace
 
 Status FormatAptProgram(const ToolPath& input, const ToolPath& output,
-                        const std::vector<AptCurveSpan>& spans,
-                        std::string* text) {
-  CHECK(input.program != nullptr &&
-        input.program->format == ProgramFormat::kApt)
+                        const std::vector<AptCurveSpan>& spans, std::string* text) {
+  CHECK(input.program != nullptr && input.program->format == ProgramFormat::kApt)
       << "FormatAptProgram needs the APT program the input was read from";
   const Program& program = *input.program;
   std::vector<ProgramItem> items;
@@ -768,11 +734,9 @@ Status FormatAptProgram(const ToolPath& input, const ToolPath& output,
   // Each item's units: those of the block it is or that its new poses
   // come before (the replaced move's).
   std::vector<double> unit(items.size(), 1.0);
-  double next_unit =
-      program.blocks.empty() ? 1.0 : program.blocks.back().mm_per_unit;
+  double next_unit = program.blocks.empty() ? 1.0 : program.blocks.back().mm_per_unit;
   for (size_t k = items.size(); k-- > 0;) {
-    if (items[k].block >= 0)
-      next_unit = program.blocks[items[k].block].mm_per_unit;
+    if (items[k].block >= 0) next_unit = program.blocks[items[k].block].mm_per_unit;
     unit[k] = next_unit;
   }
   std::string out;
@@ -781,13 +745,11 @@ Status FormatAptProgram(const ToolPath& input, const ToolPath& output,
   size_t next_pose = 0, next_span = 0;
   for (size_t k = 0; k < items.size(); ++k) {
     const ProgramItem& item = items[k];
-    size_t pose =
-        output.poses.size();  // the output pose this item writes, if any
+    size_t pose = output.poses.size();  // the output pose this item writes, if any
     if (item.block >= 0) {
       const ProgramBlock& block = program.blocks[item.block];
       // A record written as it was may rely on the source's modal feed.
-      const double source_feed =
-          item.block > 0 ? program.blocks[item.block - 1].modal_feed : 0.0;
+      const double source_feed = item.block > 0 ? program.blocks[item.block - 1].modal_feed : 0.0;
       if (source_feed > 0 && !SameFeed(file_feed, source_feed)) {
         out += FeedRecord(source_feed, block.mm_per_unit);
       }
@@ -816,14 +778,12 @@ Status FormatAptProgram(const ToolPath& input, const ToolPath& output,
       out += NurbsRecord(spans[next_span++]);
     }
   }
-  if (!program.final_newline && !out.empty() && out.back() == '\n')
-    out.pop_back();
+  if (!program.final_newline && !out.empty() && out.back() == '\n') out.pop_back();
   *text = std::move(out);
   return Status::Ok();
 }
 
-Status WriteAptProgram(const std::string& path, const ToolPath& input,
-                       const ToolPath& output,
+Status WriteAptProgram(const std::string& path, const ToolPath& input, const ToolPath& output,
                        const std::vector<AptCurveSpan>& spans) {
   Status s = CheckWritable(path, output);
   if (s.ok()) s = CheckSpans(path, output, spans);
@@ -833,8 +793,7 @@ Status WriteAptProgram(const std::string& path, const ToolPath& input,
   return WriteFileAtomically(path, text);
 }
 
-std::string FormatApt(const ToolPath& tool_path,
-                      const std::vector<AptCurveSpan>& spans) {
+std::string FormatApt(const ToolPath& tool_path, const std::vector<AptCurveSpan>& spans) {
   std::string out;
   out.reserve(64 * tool_path.poses.size() + 256);
   char buf[256];
@@ -842,8 +801,7 @@ std::string FormatApt(const ToolPath& tool_path,
   out += "TOOL PATH/TPOPT\nUNITS/MM\nMULTAX/ON\n";
   if (tool_path.cutter) {
     std::snprintf(buf, sizeof(buf), "TLDATA/MILL,%.6f,0.000000,%.6f\n",
-                  2 * tool_path.cutter->radius_mm,
-                  tool_path.cutter->flute_length_mm);
+                  2 * tool_path.cutter->radius_mm, tool_path.cutter->flute_length_mm);
     out += buf;
   }
   double feed = -1.0;
@@ -858,9 +816,8 @@ std::string FormatApt(const ToolPath& tool_path,
       std::snprintf(buf, sizeof(buf), "FEDRAT/MMPM,%.10g\n", feed);
       out += buf;
     }
-    std::snprintf(buf, sizeof(buf), "GOTO/%.6f,%.6f,%.6f,%.9f,%.9f,%.9f\n",
-                  p.p_w_tip.x(), p.p_w_tip.y(), p.p_w_tip.z(), p.a_w.x(),
-                  p.a_w.y(), p.a_w.z());
+    std::snprintf(buf, sizeof(buf), "GOTO/%.6f,%.6f,%.6f,%.9f,%.9f,%.9f\n", p.p_w_tip.x(),
+                  p.p_w_tip.y(), p.p_w_tip.z(), p.a_w.x(), p.a_w.y(), p.a_w.z());
     out += buf;
     if (next_span < spans.size() && spans[next_span].after_pose == i) {
       out += NurbsRecord(spans[next_span++]);

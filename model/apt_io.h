@@ -1,18 +1,35 @@
-// APT cutter-location files: the reader accepts what real CAM systems
-// write; the writer emits a plain 5-axis CL file that reads back to within
-// 1e-6 mm.
+// APT cutter-location files (and NX CLSF): the reader accepts what real
+// CAM systems write and keeps the program record for record
+// (ToolPath::program, model/program.h); the writers emit either that program
+// with only its smoothed cutting moves replaced, or a plain 5-axis CL file
+// that reads back to within 1e-6 mm.
 //
 // Statements: GOTO/x,y,z[,i,j,k] (i,j,k modal; +Z before the first), `$` at
-// the end of a line continues the statement, `$$` starts a comment,
-// TLDATA/MILL,d,r,l,... and CUTTER/d[,r,...] give the cutter, FEDRAT/[MMPM,]f
-// the modal feed in mm/min, RAPID makes the next GOTO a rapid; MULTAX,
-// UNITS/MM, TOOL PATH, PAINT, END-OF-PATH, FINI, PARTNO, LOADTL, SPINDL and
-// COOLNT carry nothing tpopt needs; NURBS (tpopt's own curve records, see
-// AptCurveSpan) is skipped in silence because the GOTOs after it carry the
-// same curve as points. Any other statement is skipped with one
-// warning per distinct major word (its first word, or TOOL PATH). Words are
-// case-insensitive; blanks, CRLF, and blank or comment lines inside a `$`
-// continuation are tolerated. Numbers are plain decimals (no hex, NaN, Inf).
+// the end of a line continues the statement, `$$` starts a comment.
+// TLDATA/MILL,d,r,l,... and CUTTER/d[,r,...] define a tool with its corner
+// radius, LOAD/TOOL,n and LOADTL/n load one (a LOAD and a geometry record
+// with no GOTO between are one tool; ToolPath::tools, ToolPose::tool).
+// FEDRAT/[MMPM|IPM,]f is the modal feed; UNITS/MM|INCHES, and FEDRAT/IPM with
+// no UNITS record (NX), set the units (inch is read into mm). RAPID makes the
+// next GOTO a rapid. CIRCLE/xc,yc,zc,i,j,k,r[,...] turns the next GOTO into
+// an arc counter-clockwise about (i,j,k), evaluated into points within
+// 0.001 mm. NX's NURBS/ with KNOT/ (the knot vector) and CNTRL/x,y,z[,w]
+// records is a clamped NURBS from the tool's position, evaluated likewise
+// (degree = knots - control points - 1). tpopt's own span records
+// (AptCurveSpan) are followed by their points as GOTOs. CYCLE/... up to
+// CYCLE/OFF makes its GOTOs cycle positions (rapids). SPINDL, COOLNT,
+// CUTCOM, INSERT, SELECT, CSYS, MSYS, PARTNO, MULTAX, TOOL PATH, PAINT and
+// the like carry nothing tpopt needs; any other statement is passed through
+// with one warning per distinct major word (its first word, or TOOL PATH).
+// Words are case-insensitive; blanks, CRLF, and blank or comment lines
+// inside a `$` continuation are tolerated. Numbers are plain decimals.
+//
+// Kept as written (ProgramBlock::replaceable false, the pose held): rapids,
+// cycle positions, arcs and curves and the moves on both sides of them, the
+// points of tpopt's spans, and the moves on both sides of a record that can
+// matter to the machine, which breaks the cutting run (any but FEDRAT,
+// PAINT, MULTAX, TOOL PATH, PARTNO, UNITS, PPRINT, MACHIN, END-OF-PATH,
+// FINI, END, RAPID and comment lines).
 #ifndef TPOPT_MODEL_APT_IO_H_
 #define TPOPT_MODEL_APT_IO_H_
 
@@ -30,14 +47,16 @@ namespace tpopt {
 // Reads `path` as a stream (memory grows with the poses, not the file).
 // Errors name the file, the line and the value: unreadable numbers, NaN,
 // Inf or |v| > 1e6, a GOTO with other than 3 or 6 numbers, a zero tool axis,
-// UNITS other than MM, a `$` continuation cut off by the end of file, or no
-// GOTO at all. Non-unit axes are normalised.
-Status ReadApt(const std::string& path, ToolPath* tool_path,
-               std::vector<std::string>* warnings);
+// UNITS other than MM or INCHES (or INCHES after a GOTO read in mm), a feed
+// unit that contradicts the units or is per revolution, a CIRCLE whose ends
+// are off its circle or that no GOTO follows, NURBS records that make no
+// curve or start away from the tool, a `$` continuation cut off by the end
+// of file, or no GOTO at all. Non-unit axes are normalised.
+Status ReadApt(const std::string& path, ToolPath* tool_path, std::vector<std::string>* warnings);
 
 // The same from an open stream; `name` stands for the file in messages.
-Status ReadAptStream(std::istream& in, const std::string& name,
-                     ToolPath* tool_path, std::vector<std::string>* warnings);
+Status ReadAptStream(std::istream& in, const std::string& name, ToolPath* tool_path,
+                     std::vector<std::string>* warnings);
 
 // A cubic span of the tip path, mm in W, for controllers with spline
 // interpolation. It is written right after the GOTO of pose `after_pose`
@@ -60,8 +79,7 @@ struct AptCurveSpan {
 // END-OF-PATH and FINI. Read back, tips agree within 1e-6 mm and axes
 // within 1e-9.
 // `spans` (sorted by after_pose) are written as NURBS records.
-std::string FormatApt(const ToolPath& tool_path,
-                      const std::vector<AptCurveSpan>& spans = {});
+std::string FormatApt(const ToolPath& tool_path, const std::vector<AptCurveSpan>& spans = {});
 
 // Writes FormatApt atomically (model/atomic_file.h). Refuses, writing
 // nothing, a path ReadApt would reject: no poses, or a pose (named by its
@@ -80,13 +98,11 @@ Status WriteApt(const std::string& path, const ToolPath& tool_path,
 // FormatApt. A path that was not smoothed comes back byte for byte. Fails
 // as SpliceProgram does, naming the line.
 Status FormatAptProgram(const ToolPath& input, const ToolPath& output,
-                        const std::vector<AptCurveSpan>& spans,
-                        std::string* text);
+                        const std::vector<AptCurveSpan>& spans, std::string* text);
 
 // Writes FormatAptProgram atomically, after the checks of WriteApt; errors
 // name `path`.
-Status WriteAptProgram(const std::string& path, const ToolPath& input,
-                       const ToolPath& output,
+Status WriteAptProgram(const std::string& path, const ToolPath& input, const ToolPath& output,
                        const std::vector<AptCurveSpan>& spans = {});
 
 }  // namespace tpopt

@@ -7,14 +7,12 @@
 
 namespace tpopt {
 
-Status ArcPoints(const CircularArc& arc, const Eigen::Vector3d& start,
-                 const Eigen::Vector3d& end, double chord_tolerance_mm,
-                 double radius_tolerance_mm, const std::string& what,
+Status ArcPoints(const CircularArc& arc, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
+                 double chord_tolerance_mm, double radius_tolerance_mm, const std::string& what,
                  std::vector<Eigen::Vector3d>* points) {
   std::ostringstream err;
   err << what << ": ";
-  if (!arc.center.allFinite() || !arc.axis.allFinite() ||
-      !(arc.axis.norm() > 1e-9)) {
+  if (!arc.center.allFinite() || !arc.axis.allFinite() || !(arc.axis.norm() > 1e-9)) {
     err << "arc axis (" << arc.axis.transpose() << ") is zero or not finite";
     return Status::Error(err.str());
   }
@@ -35,8 +33,7 @@ Status ArcPoints(const CircularArc& arc, const Eigen::Vector3d& start,
     if (std::abs(r.norm() - arc.radius_mm) > radius_tolerance_mm) {
       err << "the arc's " << name << " point lies " << r.norm()
           << " mm from its centre's axis, not at "
-          << "the radius " << arc.radius_mm << " mm (tolerance "
-          << radius_tolerance_mm << " mm)";
+          << "the radius " << arc.radius_mm << " mm (tolerance " << radius_tolerance_mm << " mm)";
       return Status::Error(err.str());
     }
   }
@@ -46,18 +43,14 @@ Status ArcPoints(const CircularArc& arc, const Eigen::Vector3d& start,
   double sweep = std::atan2(r1.dot(v), r1.dot(u));
   if (sweep <= 1e-12) sweep += 2 * M_PI;
   // A chord of angle h sags r (1 - cos(h/2)) below the arc.
-  const double cos_half =
-      std::clamp(1.0 - chord_tolerance_mm / arc.radius_mm, -1.0, 1.0);
+  const double cos_half = std::clamp(1.0 - chord_tolerance_mm / arc.radius_mm, -1.0, 1.0);
   const double max_step = std::max(2.0 * std::acos(cos_half), 1e-6);
-  const int steps =
-      std::max(1, static_cast<int>(std::ceil(sweep / max_step - 1e-12)));
+  const int steps = std::max(1, static_cast<int>(std::ceil(sweep / max_step - 1e-12)));
   const double h0 = d0.dot(n), h1 = d1.dot(n);
   points->clear();
   for (int k = 1; k < steps; ++k) {
     const double t = static_cast<double>(k) / steps, angle = t * sweep;
-    points->push_back(arc.center +
-                      arc.radius_mm *
-                          (std::cos(angle) * u + std::sin(angle) * v) +
+    points->push_back(arc.center + arc.radius_mm * (std::cos(angle) * u + std::sin(angle) * v) +
                       (h0 + t * (h1 - h0)) * n);
   }
   points->push_back(end);

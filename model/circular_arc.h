@@ -29,9 +29,8 @@ struct CircularArc {
 // the axis between them is a helix, climbed linearly in the angle. End at
 // the start is a full turn. Errors say which point is off the circle and by
 // how much, or which argument is invalid; `what` names the arc (file:line).
-Status ArcPoints(const CircularArc& arc, const Eigen::Vector3d& start,
-                 const Eigen::Vector3d& end, double chord_tolerance_mm,
-                 double radius_tolerance_mm, const std::string& what,
+Status ArcPoints(const CircularArc& arc, const Eigen::Vector3d& start, const Eigen::Vector3d& end,
+                 double chord_tolerance_mm, double radius_tolerance_mm, const std::string& what,
                  std::vector<Eigen::Vector3d>* points);
 
 }  // namespace tpopt

@@ -14,9 +14,8 @@ bool PartSetup::IsValid(std::string* why) const {
     if (!(std::isfinite(v) && std::abs(v) <= limit)) {
       if (why != nullptr) {
         std::ostringstream err;
-        err << "part setup " << kNames[k] << " = " << v
-            << (k < 3 ? " mm" : " deg") << " must be finite and within +-"
-            << limit;
+        err << "part setup " << kNames[k] << " = " << v << (k < 3 ? " mm" : " deg")
+            << " must be finite and within +-" << limit;
         *why = err.str();
       }
       return false;
@@ -35,8 +34,7 @@ Eigen::Matrix3d PartSetup::Rotation() const {
 
 Status ParsePartSetup(const std::string& text, PartSetup* setup) {
   const std::string usage =
-      "--part_setup=" + text +
-      " must be tx,ty,tz,rx,ry,rz (mm, deg), e.g. 120,0,-35,0,0,90";
+      "--part_setup=" + text + " must be tx,ty,tz,rx,ry,rz (mm, deg), e.g. 120,0,-35,0,0,90";
   double v[6];
   const char* at = text.c_str();
   for (int k = 0; k < 6; ++k) {
@@ -70,8 +68,7 @@ void UnplacePart(const PartSetup& setup, ToolPath* path) {
   }
 }
 
-Eigen::Vector3d UnplacePoint(const PartSetup& setup,
-                             const Eigen::Vector3d& p_w) {
+Eigen::Vector3d UnplacePoint(const PartSetup& setup, const Eigen::Vector3d& p_w) {
   return setup.Rotation().transpose() * (p_w - setup.translation_mm);
 }
 

@@ -34,9 +34,7 @@ struct PartSetup {
   // Finite, translation within 1e6 mm, angles within [-360, 360]; `why`
   // names the component and value.
   bool IsValid(std::string* why) const;
-  bool IsIdentity() const {
-    return translation_mm.isZero(0.0) && rotation_deg.isZero(0.0);
-  }
+  bool IsIdentity() const { return translation_mm.isZero(0.0) && rotation_deg.isZero(0.0); }
   // R, the rotation from P to W.
   Eigen::Matrix3d Rotation() const;
 };
@@ -50,8 +48,7 @@ void PlacePart(const PartSetup& setup, ToolPath* path);
 // Every pose and point from W back into P, for writing a program in its
 // own frame: the exact inverse of PlacePart.
 void UnplacePart(const PartSetup& setup, ToolPath* path);
-Eigen::Vector3d UnplacePoint(const PartSetup& setup,
-                             const Eigen::Vector3d& p_w);
+Eigen::Vector3d UnplacePoint(const PartSetup& setup, const Eigen::Vector3d& p_w);
 
 }  // namespace tpopt
 

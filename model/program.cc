@@ -56,9 +56,7 @@ Status SpliceProgram(const Program& program, const ToolPath& input,
     if (!block.replaceable) {
       // Points a reader made along a kept arc or curve (held, of no block)
       // are that block's motion: the block is written, not they.
-      while (j < n_out && output.poses[j].source_block < 0 &&
-             output.poses[j].held)
-        ++j;
+      while (j < n_out && output.poses[j].source_block < 0 && output.poses[j].held) ++j;
       if (j < n_out && output.poses[j].source_block < 0) {
         return Misfit(
             program, block,

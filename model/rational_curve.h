@@ -27,9 +27,8 @@ struct RationalCurve {
 // of the curve (checked at the quarter, half and three-quarter parameter of
 // each chord; spans are bisected until they are). Errors (degree, counts,
 // knots, weights) are prefixed with `what` (file:line).
-Status RationalCurvePoints(const RationalCurve& curve,
-                           double chord_tolerance_mm, const std::string& what,
-                           std::vector<Eigen::Vector3d>* points);
+Status RationalCurvePoints(const RationalCurve& curve, double chord_tolerance_mm,
+                           const std::string& what, std::vector<Eigen::Vector3d>* points);
 
 // The curve's point at the parameter t in [0, 1] (the knot range mapped to
 // [0, 1]); `curve` must be valid (RationalCurvePoints accepts it).

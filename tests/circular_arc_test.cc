@@ -17,18 +17,16 @@ double WorstSag(const CircularArc& arc, const Eigen::Vector3d& start,
   poly.insert(poly.end(), points.begin(), points.end());
   double worst = 0.0;
   for (size_t k = 1; k < poly.size(); ++k) {
-    const Eigen::Vector3d a = poly[k - 1] - arc.center,
-                          b = poly[k] - arc.center;
+    const Eigen::Vector3d a = poly[k - 1] - arc.center, b = poly[k] - arc.center;
     for (int s = 1; s < 20; ++s) {
       // The arc point between two chord ends at the same radius (planar arc
       // here): slerp of their directions.
       const double t = s / 20.0;
-      const double angle =
-          std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
-      const Eigen::Vector3d q = arc.radius_mm *
-                                (std::sin((1 - t) * angle) * a.normalized() +
-                                 std::sin(t * angle) * b.normalized()) /
-                                std::sin(angle);
+      const double angle = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+      const Eigen::Vector3d q =
+          arc.radius_mm *
+          (std::sin((1 - t) * angle) * a.normalized() + std::sin(t * angle) * b.normalized()) /
+          std::sin(angle);
       const Eigen::Vector3d ab = b - a;
       const double u = std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
       worst = std::max(worst, (q - (a + u * ab)).norm());
@@ -61,9 +59,9 @@ TEST(CircularArcTest, MinusAxisTurnsClockwiseTheLongWay) {
   // The same end points about -Z: clockwise from +X to +Y, three quarters.
   CircularArc arc{Eigen::Vector3d::Zero(), -Eigen::Vector3d::UnitZ(), 10.0};
   std::vector<Eigen::Vector3d> points;
-  ASSERT_TRUE(ArcPoints(arc, Eigen::Vector3d(10, 0, 0),
-                        Eigen::Vector3d(0, 10, 0), 0.1, 1e-6, "a", &points)
-                  .ok());
+  ASSERT_TRUE(
+      ArcPoints(arc, Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0), 0.1, 1e-6, "a", &points)
+          .ok());
   bool passed_minus_y = false;
   for (const Eigen::Vector3d& p : points) passed_minus_y |= p.y() < -9.9;
   EXPECT_TRUE(passed_minus_y);
@@ -79,8 +77,7 @@ TEST(CircularArcTest, FullCircleAndHelix) {
   double turned = 0.0;
   Eigen::Vector3d prev = start;
   for (const Eigen::Vector3d& p : points) {
-    turned +=
-        std::acos(std::clamp(prev.normalized().dot(p.normalized()), -1.0, 1.0));
+    turned += std::acos(std::clamp(prev.normalized().dot(p.normalized()), -1.0, 1.0));
     prev = p;
   }
   EXPECT_NEAR(turned, 2 * M_PI, 1e-9);
@@ -89,8 +86,7 @@ TEST(CircularArcTest, FullCircleAndHelix) {
   ASSERT_TRUE(ArcPoints(arc, start, end, 0.05, 1e-6, "a", &points).ok());
   for (size_t k = 0; k < points.size(); ++k) {
     const double angle = std::atan2(points[k].z(), points[k].y());
-    const double expected_x =
-        3.0 * (angle < 0 ? angle + 2 * M_PI : angle) / M_PI;
+    const double expected_x = 3.0 * (angle < 0 ? angle + 2 * M_PI : angle) / M_PI;
     EXPECT_NEAR(points[k].x(), k + 1 == points.size() ? 3.0 : expected_x, 1e-9);
   }
 }
@@ -98,21 +94,19 @@ TEST(CircularArcTest, FullCircleAndHelix) {
 TEST(CircularArcTest, RefusesEndsOffTheCircleAndBadArguments) {
   CircularArc arc{Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 10.0};
   std::vector<Eigen::Vector3d> points;
-  Status s =
-      ArcPoints(arc, Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10.5, 0),
-                0.01, 1e-3, "p.cls:7", &points);
+  Status s = ArcPoints(arc, Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10.5, 0), 0.01, 1e-3,
+                       "p.cls:7", &points);
   ASSERT_FALSE(s.ok());
-  EXPECT_NE(s.message().find("p.cls:7: the arc's end point lies 10.5 mm"),
-            std::string::npos)
+  EXPECT_NE(s.message().find("p.cls:7: the arc's end point lies 10.5 mm"), std::string::npos)
       << s.message();
   arc.radius_mm = 0.0;
-  EXPECT_FALSE(ArcPoints(arc, Eigen::Vector3d(10, 0, 0),
-                         Eigen::Vector3d(0, 10, 0), 0.01, 1e-3, "a", &points)
-                   .ok());
+  EXPECT_FALSE(
+      ArcPoints(arc, Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0), 0.01, 1e-3, "a", &points)
+          .ok());
   arc = CircularArc{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 10.0};
-  EXPECT_FALSE(ArcPoints(arc, Eigen::Vector3d(10, 0, 0),
-                         Eigen::Vector3d(0, 10, 0), 0.01, 1e-3, "a", &points)
-                   .ok());
+  EXPECT_FALSE(
+      ArcPoints(arc, Eigen::Vector3d(10, 0, 0), Eigen::Vector3d(0, 10, 0), 0.01, 1e-3, "a", &points)
+          .ok());
 }
 
 }  // namespace

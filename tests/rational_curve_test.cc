@@ -76,9 +76,7 @@ TEST(RationalCurveTest, RefusesBadCountsKnotsAndWeights) {
   c.weights = {1, -1, 1};
   Status s = RationalCurvePoints(c, 0.01, "p.cls:12", &points);
   ASSERT_FALSE(s.ok());
-  EXPECT_NE(s.message().find("p.cls:12: NURBS weight 2 (-1)"),
-            std::string::npos)
-      << s.message();
+  EXPECT_NE(s.message().find("p.cls:12: NURBS weight 2 (-1)"), std::string::npos) << s.message();
   c = QuarterCircle();
   c.knots = {0, 0, 1, 1, 1};
   EXPECT_FALSE(RationalCurvePoints(c, 0.01, "p.cls:12", &points).ok());

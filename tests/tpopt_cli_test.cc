@@ -1,10 +1,10 @@
 // The tpopt command end to end: flags, exit codes, messages, outputs.
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "tests/test_util.h"
@@ -21,31 +21,28 @@ using testing::TempDir;
 using testing::Tpopt;
 
 const std::string kBlade = SourcePath("data/surfaces/impeller_blade.json");
-const std::string kSim =
-    SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+const std::string kSim = SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+
 
 TEST(TpoptCliTest, GenerateThenEvaluateWritesASaneReport) {
   TempDir dir;
   const std::string cls = dir.File("p.cls"), report = dir.File("r.json");
   auto r = RunCommand(Tpopt("generate --surface=" + kBlade +
-                            " --cutter_radius=4 --poses=300 --strategy=spo "
-                            "--uv_distortion=0.03 --out=" +
-                            cls));
+                     " --cutter_radius=4 --poses=300 --strategy=spo --uv_distortion=0.03 --out=" +
+                     cls));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = RunCommand(Tpopt("evaluate --in=" + cls + " --surface=" + kBlade +
-                       " --machine=" + kSim + " --report=" + report));
+  r = RunCommand(Tpopt("evaluate --in=" + cls + " --surface=" + kBlade + " --machine=" + kSim +
+                " --report=" + report));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("300 poses"), std::string::npos) << r.output;
   const nlohmann::json j = ReadJson(report);
-  for (const char* key :
-       {"max_overcut_mm", "max_undercut_mm", "rms_deviation_mm",
-        "limit_violations", "machining_time_s", "solve_time_s", "iterations",
-        "poses_in", "poses_out"}) {
+  for (const char* key : {"max_overcut_mm", "max_undercut_mm", "rms_deviation_mm",
+                          "limit_violations", "machining_time_s", "solve_time_s", "iterations",
+                          "poses_in", "poses_out"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   for (const char* axis : {"A", "C", "X", "Y", "Z"}) {
-    for (const char* key :
-         {"peak_velocity", "peak_acceleration", "peak_jerk"}) {
+    for (const char* key : {"peak_velocity", "peak_acceleration", "peak_jerk"}) {
       ASSERT_TRUE(j[axis].contains(key)) << axis << " " << key;
       EXPECT_GE(j[axis][key].get<double>(), 0.0);
     }
@@ -59,33 +56,26 @@ TEST(TpoptCliTest, GenerateThenEvaluateWritesASaneReport) {
 
 TEST(TpoptCliTest, FlagfilePresetsAndUsageErrors) {
   TempDir dir;
-  std::ofstream(dir.File("gen.flags"))
-      << "# preset\n--cutter_radius=4\n--poses=20\n--strategy=dpo\n";
-  auto r =
-      RunCommand(Tpopt("generate --flagfile=" + dir.File("gen.flags") +
-                       " --surface=" + kBlade + " --out=" + dir.File("d.cls")));
+  std::ofstream(dir.File("gen.flags")) << "# preset\n--cutter_radius=4\n--poses=20\n--strategy=dpo\n";
+  auto r = RunCommand(Tpopt("generate --flagfile=" + dir.File("gen.flags") + " --surface=" + kBlade +
+                     " --out=" + dir.File("d.cls")));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("20 poses"), std::string::npos) << r.output;
 
-  r = RunCommand(Tpopt("generate --surface=" + kBlade +
-                       " --cutter_radius=4 --bogus=1 --out=x.cls"));
+  r = RunCommand(Tpopt("generate --surface=" + kBlade + " --cutter_radius=4 --bogus=1 --out=x.cls"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("unknown flag --bogus"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("unknown flag --bogus"), std::string::npos) << r.output;
   r = RunCommand(Tpopt("generate --poses=many"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("bad value 'many' for --poses"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("bad value 'many' for --poses"), std::string::npos) << r.output;
   std::ofstream(dir.File("bad.flags")) << "--poses=20\n--poses=x\n";
   r = RunCommand(Tpopt("generate --flagfile=" + dir.File("bad.flags")));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("bad.flags:2: bad value 'x'"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("bad.flags:2: bad value 'x'"), std::string::npos) << r.output;
   r = RunCommand(Tpopt("frobnicate"));
   EXPECT_EQ(r.exit_code, 2);
-  r = RunCommand(
-      Tpopt("generate --surface=" + kBlade +
-            " --cutter_radius=4 --strategy=xyz --out=" + dir.File("x.cls")));
+  r = RunCommand(Tpopt("generate --surface=" + kBlade + " --cutter_radius=4 --strategy=xyz --out=" +
+                dir.File("x.cls")));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_FALSE(FileExists(dir.File("x.cls")));
 }
@@ -108,27 +98,22 @@ TEST(TpoptCliTest, BadInputExitsOneNamingTheFileAndWritesNothing) {
   };
   for (const Case& c : cases) {
     std::ofstream(dir.File("bad.cls")) << c.file_text;
-    const auto r = RunCommand(Tpopt("evaluate --in=" + dir.File("bad.cls") +
-                                    " --machine=" + kSim +
-                                    " --cutter_radius=4 --report=" + report));
+    const auto r = RunCommand(Tpopt("evaluate --in=" + dir.File("bad.cls") + " --machine=" + kSim +
+                             " --cutter_radius=4 --report=" + report));
     EXPECT_EQ(r.exit_code, 1) << c.file_text << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << r.output;
     EXPECT_FALSE(FileExists(report)) << c.file_text;
   }
-  auto r = RunCommand(Tpopt("evaluate --in=" + dir.File("missing.cls") +
-                            " --report=" + report));
+  auto r = RunCommand(Tpopt("evaluate --in=" + dir.File("missing.cls") + " --report=" + report));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.output.find("missing.cls: cannot open"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("missing.cls: cannot open"), std::string::npos) << r.output;
   std::ofstream(dir.File("ok.cls")) << "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\n";
   std::ofstream(dir.File("broken.json")) << "{\"kinematics\": ";
-  r = RunCommand(Tpopt("evaluate --in=" + dir.File("ok.cls") + " --machine=" +
-                       dir.File("broken.json") + " --report=" + report));
+  r = RunCommand(Tpopt("evaluate --in=" + dir.File("ok.cls") + " --machine=" + dir.File("broken.json") +
+                " --report=" + report));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.output.find("broken.json:1: malformed JSON"), std::string::npos)
-      << r.output;
-  r = RunCommand(Tpopt("evaluate --in=" + dir.File("ok.cls") +
-                       " --report=" + dir.File("no/dir/r.json")));
+  EXPECT_NE(r.output.find("broken.json:1: malformed JSON"), std::string::npos) << r.output;
+  r = RunCommand(Tpopt("evaluate --in=" + dir.File("ok.cls") + " --report=" + dir.File("no/dir/r.json")));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("no/dir/r.json"), std::string::npos) << r.output;
   EXPECT_FALSE(FileExists(report));
@@ -143,21 +128,17 @@ namespace {
 TEST(TpoptCliTest, SmoothWritesPathAndSideBySideReport) {
   TempDir dir;
   const std::string cam = dir.File("cam.cls");
-  ASSERT_EQ(
-      RunCommand(Tpopt("generate --surface=" + kBlade +
-                       " --cutter_radius=4 --poses=120 --uv_distortion=0.03 "
-                       "--axis_noise_deg=0.3 --out=" +
-                       cam))
-          .exit_code,
-      0);
-  for (const std::string preset :
-       {"impeller_high_accuracy", "fast_spline", "denoise_spline"}) {
-    const std::string out = dir.File(preset + ".cls"),
-                      report = dir.File(preset + ".json");
-    const auto r = RunCommand(Tpopt(
-        "smooth --flagfile=" + SourcePath("data/presets/" + preset + ".flags") +
-        " --in=" + cam + " --out=" + out + " --surface=" + kBlade +
-        " --machine=" + kSim + " --report=" + report));
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + kBlade +
+                             " --cutter_radius=4 --poses=120 --uv_distortion=0.03 "
+                             "--axis_noise_deg=0.3 --out=" + cam))
+                .exit_code,
+            0);
+  for (const std::string preset : {"impeller_high_accuracy", "fast_spline", "denoise_spline"}) {
+    const std::string out = dir.File(preset + ".cls"), report = dir.File(preset + ".json");
+    const auto r = RunCommand(Tpopt("smooth --flagfile=" + SourcePath("data/presets/" + preset +
+                                                                       ".flags") +
+                                    " --in=" + cam + " --out=" + out + " --surface=" + kBlade +
+                                    " --machine=" + kSim + " --report=" + report));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     const nlohmann::json j = ReadJson(report);
     ASSERT_TRUE(j.contains("input") && j.contains("output")) << preset;
@@ -179,20 +160,14 @@ TEST(TpoptCliTest, SmoothWritesPathAndSideBySideReport) {
 
 TEST(TpoptCliTest, SmoothResamplesTheOutputAndReportsTheResampledPath) {
   TempDir dir;
-  const std::string cam = dir.File("cam.cls"), out = dir.File("out.cls"),
-                    rep = dir.File("r.json");
-  ASSERT_EQ(
-      RunCommand(
-          Tpopt("generate --surface=" + kBlade +
-                " --cutter_radius=4 --poses=80 --uv_distortion=0.03 --out=" +
-                cam))
-          .exit_code,
-      0);
-  const auto r = RunCommand(
-      Tpopt("smooth --in=" + cam + " --out=" + out + " --surface=" + kBlade +
-            " --mode=high_accuracy --quiet --resample_step_mm=0.25"
-            " --report=" +
-            rep));
+  const std::string cam = dir.File("cam.cls"), out = dir.File("out.cls"), rep = dir.File("r.json");
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + kBlade +
+                             " --cutter_radius=4 --poses=80 --uv_distortion=0.03 --out=" + cam))
+                .exit_code,
+            0);
+  const auto r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + out + " --surface=" + kBlade +
+                                  " --mode=high_accuracy --quiet --resample_step_mm=0.25"
+                                  " --report=" + rep));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json j = ReadJson(rep);
   EXPECT_EQ(j["poses_in"], 80);
@@ -206,17 +181,14 @@ TEST(TpoptCliTest, SmoothResamplesTheOutputAndReportsTheResampledPath) {
 TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
   TempDir dir;
   const std::string out = dir.File("out.cls");
-  std::ofstream(dir.File("p.cls"))
-      << "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\nGOTO/3,0,0\n";
-  auto r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") +
-                            " --out=" + out + " --mode=fancy"));
+  std::ofstream(dir.File("p.cls")) << "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\nGOTO/3,0,0\n";
+  auto r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out + " --mode=fancy"));
   EXPECT_EQ(r.exit_code, 2);
   r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
                        " --mode=spline --tolerance_mm=-1"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("tolerance -1"), std::string::npos) << r.output;
-  r = RunCommand(Tpopt("smooth --in=" + dir.File("nope.cls") + " --out=" + out +
-                       " --mode=spline"));
+  r = RunCommand(Tpopt("smooth --in=" + dir.File("nope.cls") + " --out=" + out + " --mode=spline"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_FALSE(FileExists(out));
 }
@@ -230,36 +202,31 @@ TEST(TpoptCliTest, SmoothAndEvaluateMarkLinksByTheirFeed) {
   std::ofstream program(cl);
   program << "CUTTER/8\nMULTAX\nFEDRAT/MMPM,100\n";
   for (int pass = 0; pass < 2; ++pass) {
-    if (pass > 0)
-      program << "FEDRAT/MMPM,3000\n";  // the link to the second pass
+    if (pass > 0) program << "FEDRAT/MMPM,3000\n";  // the link to the second pass
     for (int i = 0; i < 6; ++i) {
       program << "GOTO/" << i << "," << 10 * pass << ",0,0,0.1,0.99498744\n";
       if (pass > 0 && i == 0) program << "FEDRAT/MMPM,100\n";
     }
   }
   program.close();
-  auto r = RunCommand(
-      Tpopt("evaluate --in=" + cl + " --report=" + dir.File("e.json")));
+  auto r = RunCommand(Tpopt("evaluate --in=" + cl + " --report=" + dir.File("e.json")));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(ReadJson(dir.File("e.json"))["link_moves"], 1);
   EXPECT_NE(r.output.find("1 link move (feed"), std::string::npos) << r.output;
-  r = RunCommand(Tpopt("evaluate --in=" + cl + " --report=" +
-                       dir.File("e0.json") + " --link_feed_ratio=0"));
+  r = RunCommand(Tpopt("evaluate --in=" + cl + " --report=" + dir.File("e0.json") +
+                       " --link_feed_ratio=0"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(ReadJson(dir.File("e0.json"))["link_moves"], 0);
-  r = RunCommand(Tpopt("smooth --mode=spline --in=" + cl + " --out=" +
-                       dir.File("s.cls") + " --report=" + dir.File("s.json")));
+  r = RunCommand(Tpopt("smooth --mode=spline --in=" + cl + " --out=" + dir.File("s.cls") +
+                       " --report=" + dir.File("s.json")));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(ReadJson(dir.File("s.json"))["input"]["link_moves"], 1);
-  for (const char* command :
-       {"evaluate --report=", "smooth --mode=spline --out="}) {
-    r = RunCommand(Tpopt(std::string(command) + dir.File("x.out") +
-                         " --in=" + cl + " --link_feed_ratio=1"));
+  for (const char* command : {"evaluate --report=", "smooth --mode=spline --out="}) {
+    r = RunCommand(Tpopt(std::string(command) + dir.File("x.out") + " --in=" + cl +
+                         " --link_feed_ratio=1"));
     EXPECT_EQ(r.exit_code, 2) << r.output;
-    EXPECT_NE(
-        r.output.find(
-            "--link_feed_ratio: link feed ratio 1 must be 0 (no links) or > 1"),
-        std::string::npos)
+    EXPECT_NE(r.output.find("--link_feed_ratio: link feed ratio 1 must be 0 (no links) or > 1"),
+              std::string::npos)
         << r.output;
     EXPECT_FALSE(FileExists(dir.File("x.out")));
   }
@@ -268,37 +235,28 @@ TEST(TpoptCliTest, SmoothAndEvaluateMarkLinksByTheirFeed) {
 TEST(TpoptCliTest, SmoothWritesTheBSplineFitAsSpansAndPoints) {
   TempDir dir;
   const std::string cam = dir.File("cam.cls"), out = dir.File("out.cls");
-  ASSERT_EQ(
-      RunCommand(
-          Tpopt("generate --surface=" + kBlade +
-                " --cutter_radius=4 --poses=40 --strategy=spo --quiet --out=" +
-                cam))
-          .exit_code,
-      0);
-  auto r = RunCommand(
-      Tpopt("smooth --in=" + cam + " --out=" + out +
-            " --mode=spline --output_curve=bspline --curve_step_mm=0.5"));
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + kBlade +
+                             " --cutter_radius=4 --poses=40 --strategy=spo --quiet --out=" + cam))
+                .exit_code,
+            0);
+  auto r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + out +
+                            " --mode=spline --output_curve=bspline --curve_step_mm=0.5"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("B-spline output: 39 cubic spans"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("B-spline output: 39 cubic spans"), std::string::npos) << r.output;
   std::ifstream in(out);
-  const std::string text((std::istreambuf_iterator<char>(in)),
-                         std::istreambuf_iterator<char>());
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   size_t records = 0;
-  for (size_t at = text.find("NURBS/"); at != std::string::npos;
-       at = text.find("NURBS/", at + 1)) {
+  for (size_t at = text.find("NURBS/"); at != std::string::npos; at = text.find("NURBS/", at + 1)) {
     ++records;
   }
   EXPECT_EQ(records, 39u);
   // Reads back in silence, with the resampled points as poses.
-  r = RunCommand(
-      Tpopt("evaluate --in=" + out + " --report=" + dir.File("e.json")));
+  r = RunCommand(Tpopt("evaluate --in=" + out + " --report=" + dir.File("e.json")));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
   EXPECT_GT(ReadJson(dir.File("e.json"))["poses_in"].get<int>(), 40);
-  r = RunCommand(
-      Tpopt("smooth --in=" + cam + " --out=" + dir.File("x.cls") +
-            " --mode=spline --output_curve=bspline --curve_step_mm=0"));
+  r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + dir.File("x.cls") +
+                       " --mode=spline --output_curve=bspline --curve_step_mm=0"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_FALSE(FileExists(dir.File("x.cls")));
 }
@@ -353,9 +311,10 @@ TEST(TpoptCliTest, SmoothedAptProgramsKeepEveryRecordAndKeptMove) {
     std::vector<int> kept;  // GOTOs that must come out as written
   } cases[] = {
       // Rapids 13, 15, 43, 49, 64; the moves around the CIRCLE and NURBS 18,
-      // 21; the runs' first and last moves 29, 40, 51, 62.
-      {"nx_inch_tools.cls", {13, 15, 18, 21, 29, 40, 43, 49, 51, 62, 64}},
-      // Rapids 11, 19, 39, 56; cycle positions 15, 16; run ends 22, 35, 43, 52.
+      // 21, 29 (after the curve's last CNTRL).
+      {"nx_inch_tools.cls", {13, 15, 18, 21, 29, 43, 49, 64}},
+      // Rapids 11, 19, 39, 56; cycle positions 15, 16; next to CUTCOM,
+      // CUTTER and COOLNT 22, 35, 43, 52.
       {"apt_cycle_cutcom.apt", {11, 15, 16, 19, 22, 35, 39, 43, 52, 56}},
   };
   for (const Case& c : cases) {
@@ -414,18 +373,30 @@ TEST(TpoptCliTest, PartSetupPlacesAnAptProgramAndWritesItBackInItsFrame) {
       << r.output;
 }
 
-const std::string kPencilSurface =
-    SourcePath("data/pencil/surface_120x120x55.json");
+TEST(TpoptCliTest, TwoToolSizesAreNotJudgedAgainstASurfaceWithOne) {
+  TempDir dir;
+  const std::string in = SourcePath("tests/programs/nx_inch_tools.cls");
+  auto r = RunCommand(Tpopt("evaluate --in=" + in + " --surface=" + kBlade +
+                            " --report=" + dir.File("e.json")));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("the program cuts with tool 1 (line 3, D 12.7 mm) and tool 2 (line 46, "
+                          "D 6.35 mm)"),
+            std::string::npos)
+      << r.output;
+  // Without a surface the tools' sizes judge nothing: evaluated.
+  r = RunCommand(Tpopt("evaluate --in=" + in + " --report=" + dir.File("e.json")));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
+const std::string kPencilSurface = SourcePath("data/pencil/surface_120x120x55.json");
 const std::string kPencilCurves = SourcePath("data/pencil/flower_guides.json");
 
 TEST(TpoptCliTest, PencilWritesTheFittedPathAndItsChordErrors) {
   TempDir dir;
-  const std::string out = dir.File("pencil.cls"),
-                    report = dir.File("pencil.json");
-  auto r = RunCommand(Tpopt(
-      "pencil --surface=" + kPencilSurface + " --curve=" + kPencilCurves +
-      " --ball_radius=1.5 --feed=3000 --output_curve=bspline --out=" + out +
-      " --report=" + report + " --quiet"));
+  const std::string out = dir.File("pencil.cls"), report = dir.File("pencil.json");
+  auto r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" + kPencilCurves +
+                            " --ball_radius=1.5 --feed=3000 --output_curve=bspline --out=" + out +
+                            " --report=" + report + " --quiet"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const nlohmann::json j = ReadJson(report);
   EXPECT_EQ(j["runs"], 2);
@@ -434,14 +405,12 @@ TEST(TpoptCliTest, PencilWritesTheFittedPathAndItsChordErrors) {
   EXPECT_EQ(j["folded_points"], 0);
   // The file reads back through the evaluator: spans are skipped in
   // silence, the resampled points are the poses.
-  r = RunCommand(
-      Tpopt("evaluate --in=" + out + " --report=" + dir.File("e.json")));
+  r = RunCommand(Tpopt("evaluate --in=" + out + " --report=" + dir.File("e.json")));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output.find("warning"), std::string::npos) << r.output;
   EXPECT_EQ(ReadJson(dir.File("e.json"))["poses_in"], j["poses_out"]);
   std::ifstream in(out);
-  const std::string text((std::istreambuf_iterator<char>(in)),
-                         std::istreambuf_iterator<char>());
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("NURBS/3,4,0,0,0,0,1,1,1,1"), std::string::npos);
 }
 
@@ -459,16 +428,15 @@ TEST(TpoptCliTest, PencilBadInputAndUsageWriteNothing) {
   std::ofstream(dir.File("wide.json"))
       << R"({"kind": "planar_curves", "curves": [{"degree": 1, "knots": [0, 0, 1, 1],
              "control_points": [[0, 0], [200, 0]]}]})";
-  r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface +
-                       " --curve=" + dir.File("wide.json") + " --out=" + out));
+  r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" + dir.File("wide.json") +
+                       " --out=" + out));
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("curve 0, guide parameter m = "), std::string::npos)
-      << r.output;
-  r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" +
-                       kPencilCurves + " --ball_radius=0 --out=" + out));
+  EXPECT_NE(r.output.find("curve 0, guide parameter m = "), std::string::npos) << r.output;
+  r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" + kPencilCurves +
+                       " --ball_radius=0 --out=" + out));
   EXPECT_EQ(r.exit_code, 2) << r.output;
-  r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" +
-                       kPencilCurves + " --output_curve=nurbs --out=" + out));
+  r = RunCommand(Tpopt("pencil --surface=" + kPencilSurface + " --curve=" + kPencilCurves +
+                       " --output_curve=nurbs --out=" + out));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_FALSE(FileExists(out));
 }
@@ -486,29 +454,25 @@ using testing::ReadFileText;
 // A distorted CAM path on the blade, `poses` long, in `dir`.
 std::string CamPath(const TempDir& dir, int poses) {
   const std::string cam = dir.File("cam.cls");
-  const auto r = RunCommand(
-      Tpopt("generate --surface=" + kBlade +
-            " --cutter_radius=4 --poses=" + std::to_string(poses) +
-            " --uv_distortion=0.03 --axis_noise_deg=0.3 --out=" + cam));
+  const auto r = RunCommand(Tpopt("generate --surface=" + kBlade + " --cutter_radius=4 --poses=" +
+                                  std::to_string(poses) +
+                                  " --uv_distortion=0.03 --axis_noise_deg=0.3 --out=" + cam));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   return cam;
 }
 
 // Checks a --vtk export of `poses` poses over a samples_u x samples_v grid
 // against the report's deviation extremes.
-void ExpectSceneMatches(const ParsedPolyData& scene, int poses, int samples_u,
-                        int samples_v, const nlohmann::json& metrics) {
+void ExpectSceneMatches(const ParsedPolyData& scene, int poses, int samples_u, int samples_v,
+                        const nlohmann::json& metrics) {
   const size_t grid = samples_u * samples_v;
   ASSERT_EQ(scene.point_count(), grid + 2 * poses);
-  EXPECT_EQ(scene.polys.size(),
-            static_cast<size_t>((samples_u - 1) * (samples_v - 1)));
-  ASSERT_EQ(scene.lines.size(),
-            static_cast<size_t>(poses + 1));  // axes, then the tip path
+  EXPECT_EQ(scene.polys.size(), static_cast<size_t>((samples_u - 1) * (samples_v - 1)));
+  ASSERT_EQ(scene.lines.size(), static_cast<size_t>(poses + 1));  // axes, then the tip path
   EXPECT_EQ(scene.lines.back().size(), static_cast<size_t>(poses));
   const std::vector<double>& deviation = scene.point_scalars.at("deviation_mm");
   ASSERT_EQ(deviation.size(), scene.point_count());
-  const auto [lo, hi] =
-      std::minmax_element(deviation.begin(), deviation.begin() + grid);
+  const auto [lo, hi] = std::minmax_element(deviation.begin(), deviation.begin() + grid);
   EXPECT_NEAR(-*lo, metrics["max_overcut_mm"].get<double>(), 1e-6);
   EXPECT_NEAR(*hi, metrics["max_undercut_mm"].get<double>(), 1e-6);
   const std::vector<double>& part = scene.point_scalars.at("part");
@@ -519,37 +483,30 @@ void ExpectSceneMatches(const ParsedPolyData& scene, int poses, int samples_u,
 TEST(TpoptCliPicturesTest, EvaluateWritesAnHtmlReportAndAVtpScene) {
   TempDir dir;
   const std::string cam = CamPath(dir, 60);
-  const std::string html = dir.File("r.html"), vtp = dir.File("s.vtp"),
-                    report = dir.File("r.json");
-  const auto r = RunCommand(Tpopt(
-      "evaluate --in=" + cam + " --surface=" + kBlade + " --machine=" + kSim +
-      " --samples_u=40 --samples_v=6 --report=" + report + " --html=" + html +
-      " --vtk=" + vtp));
+  const std::string html = dir.File("r.html"), vtp = dir.File("s.vtp"), report = dir.File("r.json");
+  const auto r = RunCommand(Tpopt("evaluate --in=" + cam + " --surface=" + kBlade + " --machine=" +
+                                  kSim + " --samples_u=40 --samples_v=6 --report=" + report +
+                                  " --html=" + html + " --vtk=" + vtp));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string page = ReadFileText(html);
   EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"line-plot\""), 6);
-  EXPECT_EQ(testing::CountOccurrences(page, "<path class=\"series\""),
-            6);  // one path per plot
+  EXPECT_EQ(testing::CountOccurrences(page, "<path class=\"series\""), 6);  // one path per plot
   EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"heatmap\""), 1);
-  EXPECT_NE(page.find(testing::TpoptBinary() + " evaluate --in=" + cam),
-            std::string::npos);
+  EXPECT_NE(page.find(testing::TpoptBinary() + " evaluate --in=" + cam), std::string::npos);
   std::string error;
   const ParsedPolyData scene = testing::ParseVtp(ReadFileText(vtp), &error);
   ASSERT_EQ(error, "");
   ExpectSceneMatches(scene, 60, 40, 6, ReadJson(report));
 }
 
-TEST(TpoptCliPicturesTest,
-     SmoothDrawsBeforeAndAfterAndExportsTheOutputAsLegacyVtk) {
+TEST(TpoptCliPicturesTest, SmoothDrawsBeforeAndAfterAndExportsTheOutputAsLegacyVtk) {
   TempDir dir;
   const std::string cam = CamPath(dir, 60);
-  const std::string html = dir.File("r.html"), vtk = dir.File("s.vtk"),
-                    report = dir.File("r.json");
-  const auto r = RunCommand(
-      Tpopt("smooth --in=" + cam + " --out=" + dir.File("out.cls") +
-            " --surface=" + kBlade + " --machine=" + kSim +
-            " --mode=spline --samples_u=30 --samples_v=5 --report=" + report +
-            " --html=" + html + " --vtk=" + vtk));
+  const std::string html = dir.File("r.html"), vtk = dir.File("s.vtk"), report = dir.File("r.json");
+  const auto r = RunCommand(Tpopt("smooth --in=" + cam + " --out=" + dir.File("out.cls") +
+                                  " --surface=" + kBlade + " --machine=" + kSim +
+                                  " --mode=spline --samples_u=30 --samples_v=5 --report=" +
+                                  report + " --html=" + html + " --vtk=" + vtk));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::string page = ReadFileText(html);
   // Before and after on each of the six plots.
@@ -557,8 +514,7 @@ TEST(TpoptCliPicturesTest,
   EXPECT_EQ(testing::CountOccurrences(page, "<svg class=\"heatmap\""), 2);
   EXPECT_NE(page.find("<th>before</th><th>after</th>"), std::string::npos);
   std::string error;
-  const ParsedPolyData scene =
-      testing::ParseLegacyVtk(ReadFileText(vtk), &error);
+  const ParsedPolyData scene = testing::ParseLegacyVtk(ReadFileText(vtk), &error);
   ASSERT_EQ(error, "");
   const nlohmann::json j = ReadJson(report);
   ExpectSceneMatches(scene, j["poses_out"].get<int>(), 30, 5, j["output"]);
@@ -567,44 +523,36 @@ TEST(TpoptCliPicturesTest,
 TEST(TpoptCliPicturesTest, BadPictureFilesFailBeforeTheRunAndWriteNothing) {
   TempDir dir;
   const std::string cam = CamPath(dir, 30), out = dir.File("out.cls");
-  const std::string common =
-      " --in=" + cam + " --surface=" + kBlade + " --mode=spline";
-  auto r = RunCommand(Tpopt("smooth" + common + " --out=" + out +
-                            " --html=" + dir.File("no/such/r.html")));
+  const std::string common = " --in=" + cam + " --surface=" + kBlade + " --mode=spline";
+  auto r = RunCommand(Tpopt("smooth" + common + " --out=" + out + " --html=" +
+                            dir.File("no/such/r.html")));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("no/such/r.html"), std::string::npos) << r.output;
   EXPECT_FALSE(FileExists(out));
-  r = RunCommand(Tpopt("evaluate --in=" + cam +
-                       " --report=" + dir.File("r.json") +
-                       " --vtk=" + dir.File("gone/s.vtp")));
+  r = RunCommand(Tpopt("evaluate --in=" + cam + " --report=" + dir.File("r.json") + " --vtk=" +
+                       dir.File("gone/s.vtp")));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.output.find("gone/s.vtp"), std::string::npos) << r.output;
   EXPECT_FALSE(FileExists(dir.File("r.json")));
-  r = RunCommand(Tpopt("smooth" + common + " --out=" + out +
-                       " --vtk=" + dir.File("s.obj")));
+  r = RunCommand(Tpopt("smooth" + common + " --out=" + out + " --vtk=" + dir.File("s.obj")));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--vtk=" + dir.File("s.obj")), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("--vtk=" + dir.File("s.obj")), std::string::npos) << r.output;
   EXPECT_FALSE(FileExists(out));
 }
 
 TEST(TpoptCliPicturesTest, ProgressShowsPastTheDelayAndQuietSilencesIt) {
   TempDir dir;
   const std::string cam = CamPath(dir, 120);
-  const std::string common =
-      "smooth --flagfile=" +
-      SourcePath("data/presets/impeller_high_accuracy.flags") + " --in=" + cam +
-      " --out=" + dir.File("out.cls") + " --surface=" + kBlade +
-      " --machine=" + kSim;
+  const std::string common = "smooth --flagfile=" +
+                             SourcePath("data/presets/impeller_high_accuracy.flags") +
+                             " --in=" + cam + " --out=" + dir.File("out.cls") +
+                             " --surface=" + kBlade + " --machine=" + kSim;
   auto r = RunCommand(Tpopt(common + " --progress_after_s=0 -v=1"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("tpopt smooth ["), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("] evaluating the input\n"), std::string::npos)
-      << r.output;
-  EXPECT_NE(r.output.find("] high_accuracy solve"), std::string::npos)
-      << r.output;
-  EXPECT_NE(r.output.find("high_accuracy iter "), std::string::npos)
-      << r.output;  // glog -v=1
+  EXPECT_NE(r.output.find("] evaluating the input\n"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("] high_accuracy solve"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("high_accuracy iter "), std::string::npos) << r.output;  // glog -v=1
   r = RunCommand(Tpopt(common + " --progress_after_s=0 --quiet"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(r.output, "");
