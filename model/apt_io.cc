@@ -799,15 +799,31 @@ std::string FormatApt(const ToolPath& tool_path, const std::vector<AptCurveSpan>
   char buf[256];
   out += CommentLine(tool_path.title);
   out += "TOOL PATH/TPOPT\nUNITS/MM\nMULTAX/ON\n";
-  if (tool_path.cutter) {
+  // A path that names its tools gets each, with its corner radius, where
+  // its moves start; otherwise the one cutter, sharp-cornered.
+  const bool per_tool = !tool_path.tools.empty();
+  if (tool_path.cutter && !per_tool) {
     std::snprintf(buf, sizeof(buf), "TLDATA/MILL,%.6f,0.000000,%.6f\n",
                   2 * tool_path.cutter->radius_mm, tool_path.cutter->flute_length_mm);
     out += buf;
   }
   double feed = -1.0;
   size_t next_span = 0;
+  int tool = -1;
   for (size_t i = 0; i < tool_path.poses.size(); ++i) {
     const ToolPose& p = tool_path.poses[i];
+    if (per_tool && p.tool >= 0 && p.tool != tool &&
+        static_cast<size_t>(p.tool) < tool_path.tools.size()) {
+      tool = p.tool;
+      const ToolRecord& t = tool_path.tools[tool];
+      if (t.cutter) {
+        std::snprintf(buf, sizeof(buf), "TLDATA/MILL,%.6f,%.6f,%.6f\n", 2 * t.cutter->radius_mm,
+                      t.corner_radius_mm, t.cutter->flute_length_mm);
+        out += buf;
+      }
+      std::snprintf(buf, sizeof(buf), "LOAD/TOOL,%d\n", t.number);
+      out += buf;
+    }
     if (p.rapid) {
       out += "RAPID\n";
     } else if (p.feed_mm_per_min > 0 && p.feed_mm_per_min != feed) {

@@ -74,7 +74,8 @@ struct AptCurveSpan {
 
 // APT text: a `$$` header with the title (control characters blanked),
 // UNITS/MM, MULTAX/ON, TLDATA/MILL,d,0,l when the cutter is known (taper is
-// not written), FEDRAT/MMPM (10 significant digits) when the feed changes,
+// not written) or, for a path with ToolPath::tools, TLDATA/MILL,d,r,l and
+// LOAD/TOOL,n before the first move of each tool, FEDRAT/MMPM (10 significant digits) when the feed changes,
 // RAPID before rapids, GOTO with 6 decimals of mm and 9 of the axis,
 // END-OF-PATH and FINI. Read back, tips agree within 1e-6 mm and axes
 // within 1e-9.

@@ -383,6 +383,29 @@ TEST(AptProgramTest, ToolsPairLoadAndGeometryInEitherOrderAndReloadKeepsGeometry
             std::string::npos);
 }
 
+TEST(AptIoTest, PlainOutputWritesEachToolWithItsCornerRadius) {
+  // The programless writer (a path read from G-code, or made here) with
+  // the tools of the NX corpus: each tool before its first move, read back
+  // with its own diameter, corner radius and number.
+  const ToolPath path = ReadCorpus("nx_inch_tools.cls");
+  ToolPath plain = path;
+  plain.program = nullptr;
+  const std::string text = FormatApt(plain);
+  EXPECT_NE(text.find("TLDATA/MILL,12.700000,0.762000,76.200000\nLOAD/TOOL,1\n"),
+            std::string::npos);
+  EXPECT_NE(text.find("TLDATA/MILL,6.350000,1.587500,50.800000\nLOAD/TOOL,2\n"), std::string::npos);
+  ToolPath back;
+  ASSERT_TRUE(Parse(text, &back, nullptr).ok());
+  ASSERT_EQ(back.tools.size(), 2u);
+  ASSERT_EQ(back.poses.size(), path.poses.size());
+  for (size_t i = 0; i < path.poses.size(); ++i) EXPECT_EQ(back.poses[i].tool, path.poses[i].tool);
+  for (size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(back.tools[k].number, path.tools[k].number);
+    EXPECT_NEAR(back.tools[k].corner_radius_mm, path.tools[k].corner_radius_mm, 1e-6);
+    EXPECT_NEAR(back.tools[k].cutter->radius_mm, path.tools[k].cutter->radius_mm, 1e-6);
+  }
+}
+
 TEST(AptProgramTest, CircleAndNurbsBecomeHeldPointsOnTheCurve) {
   const ToolPath path = ReadCorpus("nx_inch_tools.cls");
   // CIRCLE (line 20) about the origin, radius 1 in, counter-clockwise from
