@@ -62,7 +62,7 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
 }
 
 Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
-                    const std::vector<AptCurveSpan>& spans) {
+                    const std::vector<AptCurveSpan>& spans, const ToolPath* source) {
   const std::string ext = Extension(path);
   if (IsApt(ext)) return WriteApt(path, tool_path, spans);
   if (!IsGcode(ext)) return UnknownFormat(path, ext);
@@ -72,6 +72,10 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
   options.preamble = FLAGS_gcode_preamble;
   options.postamble = FLAGS_gcode_postamble;
   options.default_feed_mm_per_min = FLAGS_feed;
+  if (source != nullptr && tool_path.program != nullptr &&
+      tool_path.program->format == ProgramFormat::kGcode) {
+    return WriteGcodeProgram(path, *source, tool_path, machine, options);
+  }
   return WriteGcode(path, tool_path, machine, options);
 }
 

@@ -25,9 +25,12 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
 
 // Writes a tool path by its extension (as LoadToolPath), whole or not at
 // all; G-code follows the --gcode_* flags. Curve spans go into APT files as
-// NURBS records; G-code gets the poses only.
+// NURBS records; G-code gets the poses only. A path read from a G-code
+// program and written as G-code is that program block for block
+// (WriteGcodeProgram), given `source`, the path as read.
 Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
-                    const std::vector<AptCurveSpan>& spans = {});
+                    const std::vector<AptCurveSpan>& spans = {},
+                    const ToolPath* source = nullptr);
 
 // The machine file, or without one an ideal A/C table at the origin with
 // no limits (A/C metrics are exact; X/Y/Z are relative to that pivot).
