@@ -50,7 +50,8 @@ DEFINE_int32(samples_v, 21, "Deviation grid: samples along each ruling (v).");
 
 DEFINE_string(mode, "high_accuracy",
               "smooth: spline (the seed's plain cubic-spline method, fast) or high_accuracy "
-              "(Ceres least squares started from the spline result).");
+              "(Ceres least squares started from the spline result), or none (the input written "
+              "back as read: a G-code program block for block).");
 DEFINE_double(tolerance_mm, 0.01,
               "high_accuracy: with a surface, the deviation unit of the cost, mm; without one, "
               "how far a tip may leave the original tip polyline, mm. stripwidth: the largest "

@@ -75,8 +75,8 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
       return program ? WriteAptProgram(path, *source, tool_path, spans)
                      : WriteApt(path, tool_path, spans);
     }
-    // Back into the program's own frame, the source (which the kept moves
-    // are compared with) as the output.
+    // Back into the program's own frame: the output, and the source its
+    // kept moves are compared with.
     ToolPath out = tool_path;
     UnplacePart(setup, &out);
     std::vector<AptCurveSpan> out_spans = spans;
@@ -95,6 +95,10 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
   options.preamble = FLAGS_gcode_preamble;
   options.postamble = FLAGS_gcode_postamble;
   options.default_feed_mm_per_min = FLAGS_feed;
+  if (source != nullptr && tool_path.program != nullptr &&
+      tool_path.program->format == ProgramFormat::kGcode) {
+    return WriteGcodeProgram(path, *source, tool_path, machine, options);
+  }
   return WriteGcode(path, tool_path, machine, options);
 }
 

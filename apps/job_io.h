@@ -26,10 +26,10 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
 
 // Writes a tool path by its extension (as LoadToolPath), whole or not at
 // all; G-code follows the --gcode_* flags. Curve spans go into APT files as
-// NURBS records; G-code gets the poses only. A path read from an APT
-// program and written as APT is that program record for record
-// (WriteAptProgram), given `source`, the path as read; APT is written in
-// the part's frame (--part_setup undone).
+// NURBS records; G-code gets the poses only. A path read from a program
+// and written in its format is that program block for block
+// (WriteGcodeProgram, WriteAptProgram), given `source`, the path as read;
+// APT is written in the part's frame (--part_setup undone).
 Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
                     const std::vector<AptCurveSpan>& spans = {},
                     const ToolPath* source = nullptr);

@@ -8,16 +8,20 @@ namespace tpopt {
 namespace {
 
 // Smoothing copies the poses it keeps; anything beyond round-off is a move.
-bool SamePose(const ToolPose& a, const ToolPose& b) {
+bool SamePlace(const ToolPose& a, const ToolPose& b) {
   constexpr double kSame = 1e-12;
-  // A rapid's feed is the machine's, whatever a feed planner assigns it.
-  return (a.p_w_tip - b.p_w_tip).norm() <= kSame &&
-         (a.a_w - b.a_w).norm() <= kSame && a.rapid == b.rapid &&
-         (a.rapid || a.feed_mm_per_min == b.feed_mm_per_min);
+  return (a.p_w_tip - b.p_w_tip).norm() <= kSame && (a.a_w - b.a_w).norm() <= kSame;
 }
 
-Status Misfit(const Program& program, const ProgramBlock& block,
-              const std::string& what) {
+// A move that can be written as its source block: the same place and feed.
+// (A verbatim block's feed is its own whatever a schedule made of it: feed
+// scheduling fills in every move's feed, rapids' included.)
+bool SameMove(const ToolPose& a, const ToolPose& b) {
+  return SamePlace(a, b) && a.feed_mm_per_min == b.feed_mm_per_min && a.rapid == b.rapid &&
+         a.link == b.link;
+}
+
+Status Misfit(const Program& program, const ProgramBlock& block, const std::string& what) {
   std::ostringstream err;
   err << program.file << ":" << block.line << ": " << what;
   return Status::Error(err.str());
@@ -25,8 +29,8 @@ Status Misfit(const Program& program, const ProgramBlock& block,
 
 }  // namespace
 
-Status SpliceProgram(const Program& program, const ToolPath& input,
-                     const ToolPath& output, std::vector<ProgramItem>* items) {
+Status SpliceProgram(const Program& program, const ToolPath& input, const ToolPath& output,
+                     std::vector<ProgramItem>* items) {
   const int n_blocks = static_cast<int>(program.blocks.size());
   int last_block = -1;
   for (size_t j = 0; j < output.poses.size(); ++j) {
@@ -35,9 +39,9 @@ Status SpliceProgram(const Program& program, const ToolPath& input,
     if (b >= n_blocks || b <= last_block || program.blocks[b].pose < 0 ||
         program.blocks[b].pose >= static_cast<int>(input.poses.size())) {
       std::ostringstream err;
-      err << program.file << ": output pose " << j << " names source block "
-          << b << ", which is out of order or has no pose of the "
-          << input.poses.size() << "-pose input";
+      err << program.file << ": output pose " << j << " names source block " << b
+          << ", which is out of order or has no pose of the " << input.poses.size()
+          << "-pose input";
       return Status::Error(err.str());
     }
     last_block = b;
@@ -58,17 +62,13 @@ Status SpliceProgram(const Program& program, const ToolPath& input,
       // are that block's motion: the block is written, not they.
       while (j < n_out && output.poses[j].source_block < 0 && output.poses[j].held) ++j;
       if (j < n_out && output.poses[j].source_block < 0) {
-        return Misfit(
-            program, block,
-            "the output has new poses before a move kept as programmed");
+        return Misfit(program, block, "the output has new poses before a move kept as programmed");
       }
       if (j == n_out || output.poses[j].source_block != b) {
-        return Misfit(program, block,
-                      "the output lost the pose of a move kept as programmed");
+        return Misfit(program, block, "the output lost the pose of a move kept as programmed");
       }
-      if (!SamePose(output.poses[j], source)) {
-        return Misfit(program, block,
-                      "the output moved the pose of a move kept as programmed");
+      if (!SamePlace(output.poses[j], source)) {
+        return Misfit(program, block, "the output moved the pose of a move kept as programmed");
       }
       out.push_back({b, -1});
       ++j;
@@ -77,7 +77,7 @@ Status SpliceProgram(const Program& program, const ToolPath& input,
     while (j < n_out && output.poses[j].source_block < 0)
       out.push_back({-1, static_cast<int>(j++)});
     if (j < n_out && output.poses[j].source_block == b) {
-      if (SamePose(output.poses[j], source)) {
+      if (SameMove(output.poses[j], source)) {
         out.push_back({b, -1});
       } else {
         out.push_back({-1, static_cast<int>(j)});

@@ -43,9 +43,9 @@ struct ProgramBlock {
   // cannot place in W, such as G53 moves or moves before every axis is set).
   int pose = -1;
   // True only for a plain cutting move (in G-code: G1 and axis words, F, N,
-  // in absolute mode, G93 or G94) that the output may replace by the poses a method
-  // made for its run. Every other block is written back verbatim, and its
-  // pose, if it has one, must come out of smoothing unchanged.
+  // in absolute mode, G93 or G94) that the output may replace by the poses a
+  // method made for its run. Every other block is written back verbatim, and
+  // its pose, if it has one, must come out of smoothing unchanged.
   bool replaceable = false;
   // Millimetres per length unit of the block's coordinates and feed (25.4
   // for G20 or inch APT): a replaced move is written in its block's units.
@@ -85,9 +85,10 @@ struct ProgramItem {
 // Lays the poses of `output`, a path smoothed from `input` (read with
 // `program`), into the program's blocks, in order:
 //  - a block without a pose, and a verbatim move, is written as it was (a
-//    verbatim move's pose must be in `output` unchanged); held poses of no
-//    block just before a verbatim move are points a reader made along it
-//    (an arc, a spline: the move is more than one pose) and are skipped;
+//    verbatim move's pose must be in `output` at the same place; its feed
+//    is the block's own); held poses of no block just before a verbatim
+//    move are points a reader made along it (an arc, a spline: the move is
+//    more than one pose) and are skipped;
 //  - a replaceable move whose pose `output` holds unchanged (position, axis,
 //    feed) is written as it was too, so a path that was not smoothed comes
 //    back text for text;
@@ -97,8 +98,8 @@ struct ProgramItem {
 // Fails, naming the block's line, when `output` does not fit the program:
 // a verbatim move's pose moved or missing, source blocks out of order, a
 // pose naming a block the program does not have.
-Status SpliceProgram(const Program& program, const ToolPath& input,
-                     const ToolPath& output, std::vector<ProgramItem>* items);
+Status SpliceProgram(const Program& program, const ToolPath& input, const ToolPath& output,
+                     std::vector<ProgramItem>* items);
 
 }  // namespace tpopt
 

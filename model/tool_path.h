@@ -2,11 +2,12 @@
 #ifndef TPOPT_MODEL_TOOL_PATH_H_
 #define TPOPT_MODEL_TOOL_PATH_H_
 
-#include <Eigen/Core>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "model/cutter.h"
 #include "model/program.h"
@@ -56,9 +57,7 @@ struct ToolPose {
 // True when the move into `pose` is kept as programmed (a rapid, a link or a
 // held move): its target is kept, and smoothing, spline runs and derivative
 // stencils stop at it.
-inline bool IsPositioningMove(const ToolPose& pose) {
-  return pose.rapid || pose.link || pose.held;
-}
+inline bool IsPositioningMove(const ToolPose& pose) { return pose.rapid || pose.link || pose.held; }
 
 // A pose a method makes between poses of its source (a sample, an inserted
 // transition), starting from a copy of `pose`: a feed move inside a run,

@@ -96,8 +96,7 @@ TEST(ProgramTest, ResampledRunReplacesItsMovesAndKeepsEveryOtherBlock) {
     EXPECT_EQ(items[k].block, expected[k].block) << k;
     EXPECT_EQ(items[k].pose, expected[k].pose) << k;
   }
-  for (int j = 1; j <= 5; ++j)
-    EXPECT_NEAR(out.poses[j].p_w_tip.x(), 0.5 * j, 1e-9) << j;
+  for (int j = 1; j <= 5; ++j) EXPECT_NEAR(out.poses[j].p_w_tip.x(), 0.5 * j, 1e-9) << j;
 }
 
 TEST(ProgramTest, RefusesAnOutputThatMovedAMoveKeptAsProgrammed) {
