@@ -319,6 +319,12 @@ TEST(TpoptCliTest, SmoothedAptProgramsKeepEveryRecordAndKeptMove) {
   };
   for (const Case& c : cases) {
     const std::string in = SourcePath(std::string("tests/programs/") + c.file);
+    // --mode=none: the program back byte for byte.
+    const std::string same = dir.File(std::string("none_") + c.file);
+    const auto none = RunCommand(Tpopt("smooth --in=" + in + " --out=" + same +
+                                       " --mode=none --cutter_radius=3 --quiet"));
+    ASSERT_EQ(none.exit_code, 0) << none.output;
+    EXPECT_EQ(testing::ReadFileText(same), testing::ReadFileText(in)) << c.file;
     for (const char* mode : {"spline", "high_accuracy"}) {
       const std::string out = dir.File(std::string(mode) + "_" + c.file);
       const auto r = RunCommand(
