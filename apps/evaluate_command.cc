@@ -20,6 +20,7 @@ int RunEvaluate(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
   if (s.ok()) s = Require(FLAGS_report, "report");
   if (s.ok()) s = CheckGcodeFlags();
+  if (s.ok()) s = CheckPartSetupFlag();
   if (s.ok()) s = CheckPictureFlags();
   DeviationOptions deviation_options;
   MotionOptions motion_options;

@@ -77,7 +77,8 @@ DEFINE_bool(whole_surface, false,
 
 DEFINE_string(mode, "high_accuracy",
               "smooth: spline (the seed's plain cubic-spline method, fast) or high_accuracy "
-              "(Ceres least squares started from the spline result).");
+              "(Ceres least squares started from the spline result), or none (the input written "
+              "back as read: a G-code program block for block).");
 DEFINE_double(tolerance_mm, 0.01,
               "high_accuracy: with a surface, the deviation unit of the cost, mm; without one, "
               "how far a tip may leave the original tip polyline, mm. stripwidth: the largest "
@@ -199,3 +200,8 @@ DEFINE_string(curve, "", "pencil: planar guide curves JSON (kind planar_curves).
 DEFINE_double(ball_radius, 1.5, "pencil: ball-end cutter radius, mm.");
 DEFINE_double(interpolation_period_ms, 8.0,
               "pencil: interpolation period, ms; CC points are feed x period apart.");
+
+DEFINE_string(part_setup, "",
+              "evaluate, smooth: where an APT program's part frame sits on the table, "
+              "tx,ty,tz,rx,ry,rz (mm, deg): p_table = Rz Ry Rx p_part + t. Empty: the "
+              "program's frame is the table's. APT output is written back in the part frame.");

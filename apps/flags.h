@@ -112,4 +112,7 @@ DECLARE_double(fit_chord_height_mm);
 DECLARE_string(curve);
 DECLARE_double(ball_radius);
 DECLARE_double(interpolation_period_ms);
+
+// The part on the table (APT programs)
+DECLARE_string(part_setup);
 #endif  // TPOPT_APPS_FLAGS_H_

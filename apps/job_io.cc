@@ -11,6 +11,7 @@
 #include "model/gcode_io.h"
 #include "model/json_io.h"
 #include "model/linuxcnc_ini.h"
+#include "model/part_setup.h"
 
 namespace tpopt {
 namespace {
@@ -131,9 +132,31 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
 }
 
 Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
-                    const std::vector<AptCurveSpan>& spans) {
+                    const std::vector<AptCurveSpan>& spans, const ToolPath* source) {
   const std::string ext = Extension(path);
-  if (IsApt(ext)) return WriteApt(path, tool_path, spans);
+  if (IsApt(ext)) {
+    PartSetup setup;
+    Status s = PartSetupFromFlag(&setup);
+    if (!s.ok()) return s;
+    const bool program = source != nullptr && tool_path.program != nullptr &&
+                         tool_path.program->format == ProgramFormat::kApt;
+    if (setup.IsIdentity()) {
+      return program ? WriteAptProgram(path, *source, tool_path, spans)
+                     : WriteApt(path, tool_path, spans);
+    }
+    // Back into the program's own frame: the output, and the source its
+    // kept moves are compared with.
+    ToolPath out = tool_path;
+    UnplacePart(setup, &out);
+    std::vector<AptCurveSpan> out_spans = spans;
+    for (AptCurveSpan& span : out_spans) {
+      for (Eigen::Vector3d& q : span.bezier) q = UnplacePoint(setup, q);
+    }
+    if (!program) return WriteApt(path, out, out_spans);
+    ToolPath in = *source;
+    UnplacePart(setup, &in);
+    return WriteAptProgram(path, in, out, out_spans);
+  }
   if (!IsGcode(ext)) return UnknownFormat(path, ext);
   GcodeOptions options;
   options.style = StyleOf(FLAGS_gcode_style);
@@ -141,6 +164,10 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
   options.preamble = FLAGS_gcode_preamble;
   options.postamble = FLAGS_gcode_postamble;
   options.default_feed_mm_per_min = FLAGS_feed;
+  if (source != nullptr && tool_path.program != nullptr &&
+      tool_path.program->format == ProgramFormat::kGcode) {
+    return WriteGcodeProgram(path, *source, tool_path, machine, options);
+  }
   return WriteGcode(path, tool_path, machine, options);
 }
 
@@ -155,6 +182,17 @@ Status InterpolationFromFlags(const std::string& path, const std::string& gcode_
   return Status::Error("--interpolation=" + FLAGS_interpolation + " must be tcp or joint");
 }
 
+Status PartSetupFromFlag(PartSetup* setup) {
+  *setup = PartSetup();
+  if (FLAGS_part_setup.empty()) return Status::Ok();
+  return ParsePartSetup(FLAGS_part_setup, setup);
+}
+
+Status CheckPartSetupFlag() {
+  PartSetup setup;
+  return PartSetupFromFlag(&setup);
+}
+
 Status LoadMachine(const std::string& path, Machine* machine) {
   if (path.empty()) {
     *machine = Machine();
@@ -167,6 +205,28 @@ Status LoadMachine(const std::string& path, Machine* machine) {
 
 Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
                      double flute_flag_mm, Cutter* cutter) {
+  // Deviation from a surface takes one cutter for the whole path: a
+  // program that cuts with tools of other sizes would be judged with the
+  // wrong one.
+  if (surface != nullptr && radius_flag_mm == 0.0) {
+    const ToolRecord* first = nullptr;
+    for (const ToolPose& p : path.poses) {
+      if (p.rapid || p.tool < 0 || !path.tools[p.tool].cutter) continue;
+      const ToolRecord& t = path.tools[p.tool];
+      if (first == nullptr) first = &t;
+      if (t.cutter->radius_mm != first->cutter->radius_mm ||
+          t.cutter->flute_length_mm != first->cutter->flute_length_mm) {
+        char buf[256];
+        std::snprintf(buf, sizeof(buf),
+                      "the program cuts with tool %d (line %d, D %g mm) and tool %d (line %d, D "
+                      "%g mm); deviation from a surface takes one cutter: evaluate each tool's "
+                      "moves on their own, or give --cutter_radius",
+                      first->number, first->source_line, 2 * first->cutter->radius_mm, t.number,
+                      t.source_line, 2 * t.cutter->radius_mm);
+        return Status::Error(buf);
+      }
+    }
+  }
   Cutter c;
   const bool have_file = path.cutter.has_value();
   if (have_file) c = *path.cutter;
@@ -190,6 +250,17 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   job->has_surface = !FLAGS_surface.empty();
   Status s = LoadMachine(FLAGS_machine, &job->machine);
   if (s.ok()) s = LoadToolPath(FLAGS_in, job->machine, quiet, &job->path);
+  PartSetup setup;
+  if (s.ok()) s = PartSetupFromFlag(&setup);
+  if (s.ok() && !setup.IsIdentity()) {
+    if (job->path.program == nullptr || job->path.program->format != ProgramFormat::kApt) {
+      s = Status::Error(FLAGS_in +
+                        ": --part_setup places APT programs; a G-code program's X Y Z are "
+                        "already the machine's (tcp: the table's frame, joint: the joints)");
+    } else {
+      PlacePart(setup, &job->path);
+    }
+  }
   if (s.ok()) MarkLinkMoves(links, &job->path);
   if (s.ok() && job->has_surface) {
     s = LoadRuledSurface(FLAGS_surface, &job->surface, &job->surface_cad);

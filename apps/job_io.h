@@ -18,6 +18,7 @@
 #include "model/interpolation.h"
 #include "model/link_moves.h"
 #include "model/machine.h"
+#include "model/part_setup.h"
 #include "model/ruled_surface.h"
 #include "model/status.h"
 #include "model/tool_path.h"
@@ -32,9 +33,18 @@ Status LoadToolPath(const std::string& path, const Machine& machine, bool quiet,
 
 // Writes a tool path by its extension (as LoadToolPath), whole or not at
 // all; G-code follows the --gcode_* flags. Curve spans go into APT files as
-// NURBS records; G-code gets the poses only.
+// NURBS records; G-code gets the poses only. A path read from a program
+// and written in its format is that program block for block
+// (WriteGcodeProgram, WriteAptProgram), given `source`, the path as read;
+// APT is written in the part's frame (--part_setup undone).
 Status SaveToolPath(const std::string& path, const Machine& machine, const ToolPath& tool_path,
-                    const std::vector<AptCurveSpan>& spans = {});
+                    const std::vector<AptCurveSpan>& spans = {},
+                    const ToolPath* source = nullptr);
+
+// --part_setup (model/part_setup.h); empty is the identity. Errors are
+// usage errors; CheckPartSetupFlag checks it before a run.
+Status PartSetupFromFlag(PartSetup* setup);
+Status CheckPartSetupFlag();
 
 // The machine file, or without one an ideal A/C table at the origin with
 // no limits (A/C metrics are exact; X/Y/Z are relative to that pivot).
@@ -67,7 +77,8 @@ Status LoadBSplineSurface(const std::string& path, BSplineSurface* surface,
 nlohmann::json CadInfoJson(const CadSurfaceInfo& info);
 
 // Everything a subcommand reads, loaded from --in, --surface, --machine,
-// --cutter_radius and --flute_length.
+// --cutter_radius, --flute_length and --part_setup (APT programs are placed
+// on the table: their poses are in the machine's workpiece frame).
 struct Job {
   ToolPath path;
   RuledSurface surface;

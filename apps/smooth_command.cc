@@ -44,7 +44,7 @@ void ReportProgressTo(ProgressDisplay* progress, SmoothingSettings* settings) {
 Status WriteOutputs(const Invocation& invocation, const Job& job, const SmoothingResult& result,
                     Interpolation interpolation, const ToolPath& written,
                     const std::vector<AptCurveSpan>& spans) {
-  Status s = SaveToolPath(FLAGS_out, job.machine, written, spans);
+  Status s = SaveToolPath(FLAGS_out, job.machine, written, spans, &job.path);
   if (s.ok() && !FLAGS_report.empty()) {
     nlohmann::json report = SmoothReportJson(invocation, FLAGS_mode, result);
     if (job.surface_cad) report["surface_cad"] = CadInfoJson(*job.surface_cad);
@@ -97,15 +97,28 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
   }
 }
 
+// --mode=none: the input as the output, evaluated once, so that a program
+// goes out through the same reader and writer as a smoothed one.
+Status PassThrough(const Job& job, const SmoothingSettings& settings, SmoothingResult* result) {
+  Status s = EvaluatePath(job.path, job.machine, job.surface_or_null(), job.cutter,
+                          settings.deviation, settings.motion, &result->input_metrics);
+  if (!s.ok()) return s;
+  result->output = job.path;
+  result->output_at_input_feed = result->input_metrics;
+  result->output_metrics = result->input_metrics;
+  return Status::Ok();
+}
+
 }  // namespace
 
 int RunSmooth(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
   if (s.ok()) s = Require(FLAGS_out, "out");
   if (s.ok()) s = CheckGcodeFlags();
+  if (s.ok()) s = CheckPartSetupFlag();
   if (s.ok()) s = CheckPictureFlags();
-  if (s.ok() && FLAGS_mode != "spline" && FLAGS_mode != "high_accuracy") {
-    s = Status::Error("--mode=" + FLAGS_mode + " must be spline or high_accuracy");
+  if (s.ok() && FLAGS_mode != "spline" && FLAGS_mode != "high_accuracy" && FLAGS_mode != "none") {
+    s = Status::Error("--mode=" + FLAGS_mode + " must be spline, high_accuracy or none");
   }
   SmoothingSettings settings;
   settings.mode = FLAGS_mode == "spline" ? SmoothingMode::kSpline : SmoothingMode::kHighAccuracy;
@@ -149,8 +162,10 @@ int RunSmooth(const Invocation& invocation) {
   if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
   SmoothingResult result;
-  SmoothingFailure failure;
-  {
+  SmoothingFailure failure = SmoothingFailure::kNone;
+  if (FLAGS_mode == "none") {
+    s = PassThrough(job, settings, &result);
+  } else {
     // Gone before the summary is printed, so its line never splits it.
     ProgressDisplay progress(stderr, "tpopt smooth", !FLAGS_quiet, FLAGS_progress_after_s);
     ReportProgressTo(&progress, &settings);

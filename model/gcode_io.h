@@ -50,10 +50,34 @@ Status FormatGcode(const ToolPath& path, const Machine& machine, const GcodeOpti
 Status WriteGcode(const std::string& file, const ToolPath& path, const Machine& machine,
                   const GcodeOptions& options);
 
-// Reads a LinuxCNC program into poses: G0/G1 with modal words, ( ) and ;
-// comments, G20/G21, G90/G91, G93/G94, M428/M429 noted (they switch the
-// style to tcp/joint), other words warned once each. `style` is the style
-// at the start. Arcs (G2/G3) and unknown G codes are errors naming the line.
+// Writes `output`, a path smoothed from `input` (read by ReadGcode, so
+// output.program is its G-code program), as that program block for block
+// (model/program.h): every block as it was, save the replaced cutting moves
+// of the smoothed runs, written "G1 X Y Z A C F" in their blocks' units,
+// style (tcp/joint) and feed mode (G94, or G93 with F from the planned
+// segment time). Where written feeds left the controller's F other than
+// the source's, an F line restores it before the next source block. The
+// options' style, preamble, postamble and inverse_time do not apply: the
+// program has its own. Fails naming the line where `output` does not fit
+// the program, or naming the pose where it does not fit the machine.
+Status FormatGcodeProgram(const ToolPath& input, const ToolPath& output, const Machine& machine,
+                          const GcodeOptions& options, std::string* text);
+Status WriteGcodeProgram(const std::string& file, const ToolPath& input, const ToolPath& output,
+                         const Machine& machine, const GcodeOptions& options);
+
+// Reads a LinuxCNC program into poses and path->program, its every line a
+// block (model/program.h). A move becomes a pose once all five axes X Y Z
+// A C are known; moves before that, G53 moves, canned cycles and probing
+// are kept as blocks without poses, and the axes they move are unknown
+// again, as after offset changes (G10, G52, G92, G5x), tool changes (M6) and
+// G28/G30 (Z alone after G43/G49). G2/G3 arcs are poses at their ends, kept
+// as programmed. ( ) and ; comments, G20/G21, G90/G91, G93/G94/G95,
+// M428/M429 (switching the style to tcp/joint), parameters and expressions
+// (model/gcode_expression.h) are read; nothing after M2/M30 is. `style` is
+// the style at the start. Refused, naming the line and the construct:
+// words for axes an A/C machine lacks (B U V W), o-words, block delete,
+// unknown G codes, parameters read before the program sets them where
+// LinuxCNC would read machine state.
 Status ReadGcode(const std::string& file, const Machine& machine, GcodeStyle style,
                  ToolPath* path, std::vector<std::string>* warnings);
 Status ReadGcodeStream(std::istream& in, const std::string& name, const Machine& machine,

@@ -58,7 +58,7 @@ TEST_F(BadInputMatrixTest, ErrorsExitOneNamingTheFileAndPlaceWithNoOutput) {
       {"negr.cls", "TLDATA/MILL,-8,0,30\nGOTO/1,2,3\nGOTO/4,5,6\n", "", "negr.cls:1: cutter radius -4"},
       {"zero.cls", "CUTTER/8\nGOTO/1,2,3,0,0,0\nGOTO/4,5,6\n", "", "zero.cls:2: zero-length tool axis"},
       {"one.cls", "CUTTER/8\nGOTO/18,-4,41.7,0.97,0,0.24\n", "", "one.cls: the path has no cutting move"},
-      {"trunc.ngc", "G21 G90\nG1 X1 Y2 Z3 F100\nG1 X", "", "trunc.ngc:3: word X has no valid number"},
+      {"trunc.ngc", "G21 G90\nG1 X1 Y2 Z3 F100\nG1 X", "", "trunc.ngc:3: word X: a value is missing"},
       {"beyond.cls", "CUTTER/8\nGOTO/0,0,0,0,-0.9396926,-0.3420201\nGOTO/1,0,0\n",
        "--machine=" + kSim, "pose 0 (line 2): A = "},
       {"ok.cls", "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\n", "--cutter_radius=-4",

@@ -1,5 +1,7 @@
 // The tpopt command end to end: flags, exit codes, messages, outputs.
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -369,6 +371,139 @@ TEST(TpoptCliTest, SmoothWritesTheBSplineFitAsSpansAndPoints) {
                        " --mode=spline --output_curve=bspline --curve_step_mm=0"));
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_FALSE(FileExists(dir.File("x.cls")));
+}
+
+// The APT corpus (tests/programs): the records of a smoothed program are the
+// source's, in order, with only replaceable GOTOs changed (and FEDRATs where
+// a feed changed); kept moves (rapids, cycle positions, arc and curve ends)
+// come out as written.
+std::vector<std::string> Lines(const std::string& file) {
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// Checks that `out` is `in` with runs of cutting GOTOs replaced: every line
+// of `in` that is not a GOTO, or is a GOTO `kept` lists (1-based lines), is
+// in `out` in order; everything else in `out` is a GOTO or a FEDRAT. Returns
+// how many GOTOs of `out` are not in `in`.
+int ReplacedGotos(const std::string& in, const std::string& out,
+                  const std::vector<int>& kept) {
+  const std::vector<std::string> a = Lines(in), b = Lines(out);
+  std::vector<std::string> must;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const bool is_goto = a[i].rfind("GOTO/", 0) == 0;
+    if (!is_goto ||
+        std::count(kept.begin(), kept.end(), static_cast<int>(i + 1)) > 0) {
+      must.push_back(a[i]);
+    }
+  }
+  size_t k = 0;
+  int replaced = 0;
+  for (const std::string& line : b) {
+    if (k < must.size() && line == must[k]) {
+      ++k;
+      continue;
+    }
+    const bool is_goto = line.rfind("GOTO/", 0) == 0;
+    EXPECT_TRUE(is_goto || line.rfind("FEDRAT/", 0) == 0)
+        << out << ": added '" << line << "'";
+    replaced += is_goto;
+  }
+  EXPECT_EQ(k, must.size())
+      << out << ": missing '" << must[std::min(k, must.size() - 1)] << "'";
+  return replaced;
+}
+
+TEST(TpoptCliTest, SmoothedAptProgramsKeepEveryRecordAndKeptMove) {
+  TempDir dir;
+  struct Case {
+    const char* file;
+    std::vector<int> kept;  // GOTOs that must come out as written
+  } cases[] = {
+      // Rapids 13, 15, 43, 49, 64; the moves around the CIRCLE and NURBS 18,
+      // 21, 29 (after the curve's last CNTRL).
+      {"nx_inch_tools.cls", {13, 15, 18, 21, 29, 43, 49, 64}},
+      // Rapids 11, 19, 39, 56; cycle positions 15, 16; next to CUTCOM,
+      // CUTTER and COOLNT 22, 35, 43, 52.
+      {"apt_cycle_cutcom.apt", {11, 15, 16, 19, 22, 35, 39, 43, 52, 56}},
+  };
+  for (const Case& c : cases) {
+    const std::string in = SourcePath(std::string("tests/programs/") + c.file);
+    // --mode=none: the program back byte for byte.
+    const std::string same = dir.File(std::string("none_") + c.file);
+    const auto none = RunCommand(Tpopt("smooth --in=" + in + " --out=" + same +
+                                       " --mode=none --cutter_radius=3 --quiet"));
+    ASSERT_EQ(none.exit_code, 0) << none.output;
+    EXPECT_EQ(testing::ReadFileText(same), testing::ReadFileText(in)) << c.file;
+    for (const char* mode : {"spline", "high_accuracy"}) {
+      const std::string out = dir.File(std::string(mode) + "_" + c.file);
+      const auto r = RunCommand(
+          Tpopt("smooth --in=" + in + " --out=" + out + " --mode=" + mode +
+                " --cutter_radius=3 --quiet --report=" + dir.File("r.json")));
+      ASSERT_EQ(r.exit_code, 0) << r.output;
+      EXPECT_GT(ReplacedGotos(in, out, c.kept), 0)
+          << out << ": nothing was smoothed";
+    }
+  }
+}
+
+TEST(TpoptCliTest, PartSetupPlacesAnAptProgramAndWritesItBackInItsFrame) {
+  TempDir dir;
+  const std::string in = SourcePath("tests/programs/apt_cycle_cutcom.apt");
+  const std::string out = dir.File("placed.apt");
+  // Far from the C axis the sim machine's Y travel (+-100) is exceeded:
+  // refused, naming the axis and its travel, nothing written.
+  auto r = RunCommand(Tpopt(
+      "smooth --in=" + in + " --out=" + out +
+      " --mode=spline --cutter_radius=3 --part_setup=0,150,0,0,0,0 --machine=" +
+      kSim));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("Y = "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("is outside the travel [-100, 100]"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(FileExists(out));
+  // Placed where it fits, turned 90 degrees on the table: written back in
+  // its own frame, kept records and moves as they were.
+  r = RunCommand(Tpopt(
+      "smooth --in=" + in + " --out=" + out +
+      " --mode=spline --cutter_radius=3 --quiet --part_setup=20,-10,5,0,0,90"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_GT(ReplacedGotos(in, out, {11, 15, 16, 19, 22, 35, 39, 43, 52, 56}),
+            0);
+  // The replaced moves are in the part's frame too: each tip within the
+  // smoothing's reach of its source (the placement moves them by 22 mm).
+  const std::vector<std::string> a = Lines(in), b = Lines(out);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (a[i].rfind("GOTO/", 0) != 0) continue;
+    double xa, ya, xb, yb;
+    ASSERT_EQ(std::sscanf(a[i].c_str(), "GOTO/%lf,%lf", &xa, &ya), 2);
+    ASSERT_EQ(std::sscanf(b[i].c_str(), "GOTO/%lf,%lf", &xb, &yb), 2) << b[i];
+    EXPECT_LT(std::hypot(xb - xa, yb - ya), 0.05) << a[i] << " -> " << b[i];
+  }
+  r = RunCommand(Tpopt("smooth --in=" + in + " --out=" + out +
+                       " --mode=spline --part_setup=1,2"));
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("must be tx,ty,tz,rx,ry,rz"), std::string::npos)
+      << r.output;
+}
+
+TEST(TpoptCliTest, TwoToolSizesAreNotJudgedAgainstASurfaceWithOne) {
+  TempDir dir;
+  const std::string in = SourcePath("tests/programs/nx_inch_tools.cls");
+  auto r = RunCommand(Tpopt("evaluate --in=" + in + " --surface=" + kBlade +
+                            " --report=" + dir.File("e.json")));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("the program cuts with tool 1 (line 3, D 12.7 mm) and tool 2 (line 46, "
+                          "D 6.35 mm)"),
+            std::string::npos)
+      << r.output;
+  // Without a surface the tools' sizes judge nothing: evaluated.
+  r = RunCommand(Tpopt("evaluate --in=" + in + " --report=" + dir.File("e.json")));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
 const std::string kPencilSurface = SourcePath("data/pencil/surface_120x120x55.json");
