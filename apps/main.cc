@@ -56,6 +56,18 @@ int main(int argc, char** argv) {
     return tpopt::kExitSuccess;
   }
   std::vector<std::string> args(argv + 2, argv + argc);
+  // Help after a subcommand is help, before any check of the subcommand's
+  // own flags (`tpopt pencil --help` must not answer "--surface is required").
+  for (const std::string& arg : args) {
+    if (arg == "--helpfull" || arg == "-helpfull") {
+      gflags::ShowUsageWithFlags(argv[0]);
+      return tpopt::kExitSuccess;
+    }
+    if (arg == "--help" || arg == "-help" || arg == "-h" || arg == "--helpshort") {
+      gflags::ShowUsageWithFlagsRestrict(argv[0], "apps/flags");
+      return tpopt::kExitSuccess;
+    }
+  }
   std::vector<std::string> positional;
   const tpopt::Status parsed = tpopt::ParseFlags(args, &positional);
   if (!parsed.ok()) {
