@@ -212,9 +212,6 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
         return Fail(SmoothingFailure::kSolver,
                     "Ceres failed (" + result->high_accuracy.message + ")", failure);
       }
-      result->runs_kept_as_input = KeepRunsNoWorse(*job.input, *job.machine,
-                                                   settings.feed.default_feed_mm_per_min,
-                                                   &result->output);
       s = finish_output();
       if (!s.ok()) return s;
       if (IsWorseThan(result->output_at_input_feed, result->initial_guess_metrics)) {

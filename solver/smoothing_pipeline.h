@@ -59,9 +59,9 @@ struct SmoothingResult {
   // High accuracy: the tolerance unit of the solve that was kept, mm; below
   // the stated tolerance where that had to be tightened to keep it.
   double solve_tolerance_mm = 0.0;
-  // Runs put back as programmed because the method made their peak d2A/ds2
-  // or d2C/ds2 higher than the input's (spline and high-accuracy modes
-  // never return a program worse on either).
+  // Spline mode: runs put back as programmed because the spline made their
+  // peak d2A/ds2 or d2C/ds2 higher than the input's (the spline mode never
+  // returns a program worse on either).
   int runs_kept_as_input = 0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;
