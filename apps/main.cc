@@ -23,7 +23,7 @@ constexpr char kUsage[] =
     "  generate  --surface=S --cutter_radius=R --poses=N --strategy=spo|dpo\n"
     "            [--uv_distortion=AMP] [--axis_noise_deg=D] --out=P.cls\n"
     "  evaluate  --in=P [--surface=S] [--machine=M] --report=R.json\n"
-    "  smooth    --in=P --out=Q [--surface=S] [--machine=M] --mode=spline|high_accuracy\n"
+    "  smooth    --in=P --out=Q [--surface=S] [--machine=M] --mode=spline|high_accuracy|none\n"
     "            [weights...] --report=R.json [--output_curve=points|bspline]\n"
     "  pencil    --surface=S.json --curve=C.json --ball_radius=R --out=P.cls\n"
     "            [--feed=F] [--interpolation_period_ms=T] [--output_curve=points|bspline]\n"
