@@ -681,6 +681,8 @@ TEST(GcodeProgramTest, ProgramsForOtherMachinesAndSubroutinesAreRefused) {
       {start + "G7\n", "bad.ngc:2: G7 (lathe"},
       {start + "G12 X1\n", "bad.ngc:2: G12 is not a G code tpopt reads"},
       {start + "M72\n", "bad.ngc:2: M72"},
+      {start + "G1 X" + std::string(300, '[') + "1" + std::string(300, ']') + "\n",
+       "bad.ngc:2: the block has 300 brackets and parameters"},
   };
   for (const auto& [program, message] : cases) {
     EXPECT_NE(error_of(program).find(message), std::string::npos)
