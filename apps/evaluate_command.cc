@@ -15,6 +15,16 @@
 #include "model/json_io.h"
 
 namespace tpopt {
+namespace {
+
+Status TravelCheck(const Job& job) {
+  std::vector<JointVector> joints;
+  Status s = job.machine.AssignJoints(job.path, &joints);
+  if (s.ok()) s = job.machine.CheckTravel(job.path, joints);
+  return s;
+}
+
+}  // namespace
 
 int RunEvaluate(const Invocation& invocation) {
   Status s = Require(FLAGS_in, "in");
@@ -67,6 +77,11 @@ int RunEvaluate(const Invocation& invocation) {
   if (job.controller) {
     report["controller"] = ControllerRunJson(*job.controller, metrics.motion.machining_time_s);
   }
+  // What `tpopt smooth` refuses the path for, said here too: the first pose
+  // outside an axis's travel, as smooth names it.
+  const Status travel = TravelCheck(job);
+  report["fits_travel"] = travel.ok();
+  if (!travel.ok()) report["travel"] = travel.message();
   s = WriteReport(FLAGS_report, report);
   if (s.ok()) {
     // The file name alone labels the plots: a folder path would not fit the legend.
@@ -79,6 +94,10 @@ int RunEvaluate(const Invocation& invocation) {
     return kExitBadInput;
   }
   if (!FLAGS_quiet) std::printf("%s", Summary(FLAGS_in, metrics).c_str());
+  if (!travel.ok()) {
+    std::fprintf(stderr, "tpopt evaluate: %s: %s (tpopt smooth refuses it)\n", FLAGS_in.c_str(),
+                 travel.message().c_str());
+  }
   return kExitSuccess;
 }
 

@@ -23,7 +23,7 @@ constexpr char kUsage[] =
     "  generate  --surface=S --cutter_radius=R --poses=N --strategy=spo|dpo\n"
     "            [--uv_distortion=AMP] [--axis_noise_deg=D] --out=P.cls\n"
     "  evaluate  --in=P [--surface=S] [--machine=M] --report=R.json\n"
-    "  smooth    --in=P --out=Q [--surface=S] [--machine=M] --mode=spline|high_accuracy\n"
+    "  smooth    --in=P --out=Q [--surface=S] [--machine=M] --mode=spline|high_accuracy|none\n"
     "            [weights...] --report=R.json [--output_curve=points|bspline]\n"
     "  pencil    --surface=S.json --curve=C.json --ball_radius=R --out=P.cls\n"
     "            [--feed=F] [--interpolation_period_ms=T] [--output_curve=points|bspline]\n"
@@ -56,6 +56,18 @@ int main(int argc, char** argv) {
     return tpopt::kExitSuccess;
   }
   std::vector<std::string> args(argv + 2, argv + argc);
+  // Help after a subcommand is help, before any check of the subcommand's
+  // own flags (`tpopt pencil --help` must not answer "--surface is required").
+  for (const std::string& arg : args) {
+    if (arg == "--helpfull" || arg == "-helpfull") {
+      gflags::ShowUsageWithFlags(argv[0]);
+      return tpopt::kExitSuccess;
+    }
+    if (arg == "--help" || arg == "-help" || arg == "-h" || arg == "--helpshort") {
+      gflags::ShowUsageWithFlagsRestrict(argv[0], "apps/flags");
+      return tpopt::kExitSuccess;
+    }
+  }
   std::vector<std::string> positional;
   const tpopt::Status parsed = tpopt::ParseFlags(args, &positional);
   if (!parsed.ok()) {

@@ -87,6 +87,11 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
     std::printf("  spline: %d pole passages routed through A = 0 (A changes sign, C held)\n",
                 result.spline.pole_crossings);
   }
+  if (result.runs_kept_as_input > 0) {
+    std::printf("  %d cutting runs kept as programmed: smoothing made their peak d2A/ds2 or "
+                "d2C/ds2 higher\n",
+                result.runs_kept_as_input);
+  }
   if (result.feed.moves_slowed > 0) {
     std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",
                 result.feed.moves_slowed, result.feed.min_feed_mm_per_min);

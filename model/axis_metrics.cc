@@ -99,6 +99,17 @@ MotionSamples ComputeMotionSamples(const Machine& machine, const ToolPath& path,
   return m;
 }
 
+double SecondDerivativePerMm2(const ToolPath& path, const std::vector<JointVector>& joints,
+                              const MotionSamples& m, size_t i, int a) {
+  if (i == 0 || i + 1 >= joints.size() || !m.has_acceleration[i]) return 0.0;
+  if (path.poses[i].link || path.poses[i + 1].link) return 0.0;
+  const double ds_mid = 0.5 * (m.ds_mm[i] + m.ds_mm[i - 1]);
+  if (!(ds_mid > 1e-9 && m.ds_mm[i] > 1e-9 && m.ds_mm[i - 1] > 1e-9)) return 0.0;
+  const double slope1 = (joints[i + 1][a] - joints[i][a]) / m.ds_mm[i];
+  const double slope0 = (joints[i][a] - joints[i - 1][a]) / m.ds_mm[i - 1];
+  return std::abs(slope1 - slope0) / ds_mid;
+}
+
 MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,
                             const std::vector<JointVector>& joints,
                             const MotionOptions& options) {
@@ -133,7 +144,6 @@ MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,
   }
   for (size_t i = 1; i + 1 < n; ++i) {
     if (!m.has_acceleration[i]) continue;
-    const double ds_mid = 0.5 * (m.ds_mm[i] + m.ds_mm[i - 1]);
     for (int a = 0; a < 5; ++a) {
       AxisMotion& axis = report.axes[a];
       check(a, static_cast<int>(i), m.acceleration[i][a], machine.limits[a].max_acceleration,
@@ -141,13 +151,8 @@ MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,
       if (m.has_jerk[i]) {
         check(a, static_cast<int>(i), m.jerk[i][a], machine.limits[a].max_jerk, &axis.peak_jerk);
       }
-      const bool in_run = !path.poses[i].link && !path.poses[i + 1].link;
-      if (in_run && ds_mid > 1e-9 && m.ds_mm[i] > 1e-9 && m.ds_mm[i - 1] > 1e-9) {
-        const double slope1 = (joints[i + 1][a] - joints[i][a]) / m.ds_mm[i];
-        const double slope0 = (joints[i][a] - joints[i - 1][a]) / m.ds_mm[i - 1];
-        axis.peak_second_derivative_per_mm2 =
-            std::max(axis.peak_second_derivative_per_mm2, std::abs(slope1 - slope0) / ds_mid);
-      }
+      axis.peak_second_derivative_per_mm2 = std::max(axis.peak_second_derivative_per_mm2,
+                                                      SecondDerivativePerMm2(path, joints, m, i, a));
     }
   }
   for (const AxisMotion& a : report.axes) report.limit_violations += a.limit_violations;

@@ -73,6 +73,13 @@ MotionSamples ComputeMotionSamples(const Machine& machine, const ToolPath& path,
                                    const std::vector<JointVector>& joints,
                                    double default_feed_mm_per_min);
 
+// |d2 joint a / ds2| at pose i, units (mm or rad) per mm^2, s the tip's arc
+// length: the divided difference whose peak the metrics report; 0 where it
+// is not taken (i at either end, no acceleration sample there, a link on
+// either side, or a move of zero length).
+double SecondDerivativePerMm2(const ToolPath& path, const std::vector<JointVector>& joints,
+                              const MotionSamples& m, size_t i, int a);
+
 // Metrics for `path` whose joints are `joints` (from Machine::AssignJoints,
 // one per pose). Precondition: joints.size() == path.poses.size().
 MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,

@@ -243,6 +243,7 @@ std::string OwordConstruct(const std::string& code) {
 
 // Larger word values are no coordinate, feed or code of a real program.
 constexpr double kLargestValue = 1e6;
+constexpr long kMostNesting = 256;
 
 constexpr int kAxes = 5;  // X Y Z A C, the indices of JointVector
 constexpr int kNoMotion = -1;
@@ -533,6 +534,14 @@ class GcodeReader {
                           " (subroutines, calls, if/while/repeat) is not "
                           "supported; expand it "
                           "into plain moves");
+    }
+    // Expressions and parameters are read recursively: a bound on their
+    // count bounds the depth (no real block comes near it).
+    const auto nested = std::count(code.begin(), code.end(), '[') +
+                        std::count(code.begin(), code.end(), '#');
+    if (nested > kMostNesting) {
+      return Error(n, "the block has " + std::to_string(nested) + " brackets and parameters, " +
+                          "more than the " + std::to_string(kMostNesting) + " tpopt reads");
     }
     std::vector<std::pair<char, double>> words;
     std::vector<std::pair<std::string, double>> assignments;

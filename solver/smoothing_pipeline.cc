@@ -1,11 +1,13 @@
 #include "solver/smoothing_pipeline.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
 #include <glog/logging.h>
 
+#include "model/axis_metrics.h"
 #include "solver/pole_passage.h"
 
 namespace tpopt {
@@ -92,6 +94,78 @@ void GrowActiveSet(const DeviationReport& out, const std::vector<size_t>& beyond
   *active = std::move(grown);
 }
 
+// The peak |d2A/ds2| and |d2C/ds2| of each cutting run of `path` (runs as
+// RunEnd splits them), over the samples at the run's poses.
+Status RunPeaks(const ToolPath& path, const Machine& machine, double default_feed_mm_per_min,
+                std::vector<std::array<double, 2>>* peaks) {
+  std::vector<JointVector> joints;
+  Status s = machine.AssignJoints(path, &joints);
+  if (!s.ok()) return s;
+  const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
+  peaks->clear();
+  for (size_t first = 0; first < path.poses.size();) {
+    const size_t end = RunEnd(path, first);
+    std::array<double, 2> peak = {0.0, 0.0};
+    for (size_t i = first; i < end; ++i) {
+      peak[0] = std::max(peak[0], SecondDerivativePerMm2(path, joints, m, i, kA));
+      peak[1] = std::max(peak[1], SecondDerivativePerMm2(path, joints, m, i, kC));
+    }
+    peaks->push_back(peak);
+    first = end;
+  }
+  return Status::Ok();
+}
+
+// Puts back as programmed every run of `output` whose peak d2A/ds2 or
+// d2C/ds2 is higher than that of the same run of `input`, so that the
+// program as a whole is no worse on either. A run's first sample also sees
+// the last pose of the run before, which Ceres may move: a run put back
+// that is still worse puts its predecessor back too, until none is (at
+// worst the whole input). Returns how many runs were put back (0 when the
+// two paths' runs do not pair up, which no method makes).
+int KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double default_feed_mm_per_min,
+                    ToolPath* output) {
+  std::vector<std::array<double, 2>> before, after;
+  if (!RunPeaks(input, machine, default_feed_mm_per_min, &before).ok() ||
+      !RunPeaks(*output, machine, default_feed_mm_per_min, &after).ok() ||
+      before.size() != after.size()) {
+    return 0;
+  }
+  std::vector<size_t> in_first, out_first;  // where each run starts
+  for (size_t i = 0; i < input.poses.size(); i = RunEnd(input, i)) in_first.push_back(i);
+  for (size_t i = 0; i < output->poses.size(); i = RunEnd(*output, i)) out_first.push_back(i);
+  in_first.push_back(input.poses.size());
+  out_first.push_back(output->poses.size());
+  const size_t runs = before.size();
+  std::vector<bool> back(runs, false);
+  ToolPath composed = *output;
+  // Round-off of the written 6 decimals is no worsening.
+  constexpr double kSlack = 1e-9;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (size_t r = 0; r < runs; ++r) {
+      if (after[r][0] <= before[r][0] + kSlack && after[r][1] <= before[r][1] + kSlack) continue;
+      if (!back[r]) {
+        back[r] = changed = true;
+      } else if (r > 0 && !back[r - 1]) {
+        back[r - 1] = changed = true;
+      }
+    }
+    if (!changed) break;
+    composed = WithoutPoses(*output);
+    for (size_t r = 0; r < runs; ++r) {
+      const ToolPath& from = back[r] ? input : *output;
+      const size_t first = back[r] ? in_first[r] : out_first[r];
+      const size_t end = back[r] ? in_first[r + 1] : out_first[r + 1];
+      composed.poses.insert(composed.poses.end(), from.poses.begin() + first,
+                            from.poses.begin() + end);
+    }
+    if (!RunPeaks(composed, machine, default_feed_mm_per_min, &after).ok()) return 0;
+  }
+  *output = std::move(composed);
+  return static_cast<int>(std::count(back.begin(), back.end(), true));
+}
+
 Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure* failure) {
   *failure = kind;
   return Status::Error(message);
@@ -141,7 +215,9 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   stage("spline smoothing");
   s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
                         &spline_path, &result->spline);
-  if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+  // The input was read and fits the machine: a method that fails on it fails
+  // as a solver.
+  if (!s.ok()) return Fail(SmoothingFailure::kSolver, "spline smoothing: " + s.message(), failure);
 
   // Resamples result->output if asked, evaluates it and holds it to the
   // machine's travel.
@@ -163,6 +239,9 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   };
   if (!high_accuracy) {
     result->output = std::move(spline_path);
+    result->runs_kept_as_input = KeepRunsNoWorse(*job.input, *job.machine,
+                                                 settings.feed.default_feed_mm_per_min,
+                                                 &result->output);
     s = finish_output();
     if (!s.ok()) return s;
   } else {

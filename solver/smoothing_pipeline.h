@@ -76,6 +76,10 @@ struct SmoothingResult {
   // with a penalty of its own), and how many points that set held.
   int tolerance_rounds = 0;
   int tolerance_points = 0;
+  // Spline mode: runs put back as programmed because the spline made their
+  // peak d2A/ds2 or d2C/ds2 higher than the input's (the spline mode never
+  // returns a program worse on either).
+  int runs_kept_as_input = 0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;
   FeedScheduleReport feed;

@@ -681,6 +681,8 @@ TEST(GcodeProgramTest, ProgramsForOtherMachinesAndSubroutinesAreRefused) {
       {start + "G7\n", "bad.ngc:2: G7 (lathe"},
       {start + "G12 X1\n", "bad.ngc:2: G12 is not a G code tpopt reads"},
       {start + "M72\n", "bad.ngc:2: M72"},
+      {start + "G1 X" + std::string(300, '[') + "1" + std::string(300, ']') + "\n",
+       "bad.ngc:2: the block has 300 brackets and parameters"},
   };
   for (const auto& [program, message] : cases) {
     EXPECT_NE(error_of(program).find(message), std::string::npos)
@@ -737,6 +739,46 @@ TEST(GcodeProgramTest, AxesNeverSetStayUnsetAndTheEndStaysTheEnd) {
                       "F600.0000\nX-15.268\n"),
             std::string::npos)
       << text;
+}
+
+}  // namespace
+}  // namespace tpopt
+
+namespace tpopt {
+namespace {
+
+TEST(GcodeProgramTest, SplineModeNeverReturnsLinuxCncsImpellerWorse) {
+  if (!testing::FileExists(kImpellerNgc)) GTEST_SKIP() << kImpellerNgc << " absent";
+  testing::TempDir dir;
+  const std::string sim = testing::SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+  const std::string out = dir.File("spline.ngc"), report = dir.File("r.json");
+  const auto r = testing::RunCommand(testing::TpoptBinary() + " smooth --mode=spline --in=" +
+                                     kImpellerNgc + " --out=" + out + " --machine=" + sim +
+                                     " --cutter_radius=3 --quiet --report=" + report);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  // Without the fallback the spline took d2A/ds2 2.04 -> 3.14 and d2C/ds2
+  // 1.92 -> 4.89 deg/mm^2; the runs it made worse are put back.
+  const nlohmann::json j = testing::ReadJson(report);
+  EXPECT_GT(j["runs_kept_as_input"].get<int>(), 0);
+  // Judged on the programs as written, read back.
+  Machine machine;
+  ASSERT_TRUE(ReadMachineJson(sim, &machine).ok());
+  ToolPath before, after;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(ReadGcode(kImpellerNgc, machine, GcodeStyle::kJoint, &before, &warnings).ok());
+  ASSERT_TRUE(ReadGcode(out, machine, GcodeStyle::kJoint, &after, &warnings).ok());
+  MarkLinkMoves(LinkMoveOptions(), &before);
+  MarkLinkMoves(LinkMoveOptions(), &after);
+  PathMetrics m_before, m_after;
+  ASSERT_TRUE(EvaluatePath(before, machine, nullptr, Cutter(), DeviationOptions(),
+                           MotionOptions(), &m_before).ok());
+  ASSERT_TRUE(EvaluatePath(after, machine, nullptr, Cutter(), DeviationOptions(),
+                           MotionOptions(), &m_after).ok());
+  for (int axis : {kA, kC}) {
+    EXPECT_LE(m_after.motion.axes[axis].peak_second_derivative_per_mm2,
+              m_before.motion.axes[axis].peak_second_derivative_per_mm2 + 1e-6)
+        << axis;
+  }
 }
 
 }  // namespace

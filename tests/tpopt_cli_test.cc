@@ -598,6 +598,42 @@ void ExpectSceneMatches(const ParsedPolyData& scene, int poses, int samples_u, i
   EXPECT_EQ(std::count(part.begin(), part.end(), 1.0), poses);
 }
 
+TEST(TpoptCliTest, HelpAfterAnySubcommandPrintsHelp) {
+  for (const std::string sub : {"generate", "evaluate", "smooth", "pencil", "stripwidth"}) {
+    SCOPED_TRACE(sub);
+    const auto help = RunCommand(Tpopt(sub + " --help"));
+    EXPECT_EQ(help.exit_code, 0) << help.output;
+    EXPECT_NE(help.output.find("usage: tpopt"), std::string::npos);
+    EXPECT_NE(help.output.find("-surface"), std::string::npos);  // tpopt's own flags
+    EXPECT_EQ(help.output.find("is required"), std::string::npos) << help.output;
+    // --helpfull adds gflags' own flags.
+    const auto full = RunCommand(Tpopt(sub + " --helpfull"));
+    EXPECT_EQ(full.exit_code, 0) << full.output;
+    EXPECT_NE(full.output.find("-tab_completion_columns"), std::string::npos);
+    EXPECT_EQ(help.output.find("-tab_completion_columns"), std::string::npos);
+  }
+}
+
+TEST(TpoptCliTest, EvaluateReportsTheTravelSmoothRefuses) {
+  TempDir dir;
+  const std::string in = dir.File("travel.ngc"), report = dir.File("r.json");
+  std::ofstream(in) << "G21 G90 G94\nG0 X0 Y0 Z5 A10 C0\nG1 X100 F500\nG1 X250\nG1 X260\nM2\n";
+  const std::string where = "pose 2 (line 4): X = 250 is outside the travel [-200, 200]";
+  const auto smooth = RunCommand(Tpopt("smooth --mode=spline --in=" + in + " --out=" +
+                                       dir.File("o.ngc") + " --machine=" + kSim +
+                                       " --cutter_radius=3 --quiet"));
+  EXPECT_EQ(smooth.exit_code, 1);
+  EXPECT_NE(smooth.output.find(where), std::string::npos) << smooth.output;
+  const auto evaluate = RunCommand(Tpopt("evaluate --in=" + in + " --report=" + report +
+                                         " --machine=" + kSim + " --cutter_radius=3 --quiet"));
+  EXPECT_EQ(evaluate.exit_code, 0) << evaluate.output;
+  EXPECT_NE(evaluate.output.find(where), std::string::npos) << evaluate.output;
+  const nlohmann::json j = ReadJson(report);
+  EXPECT_FALSE(j["fits_travel"].get<bool>());
+  EXPECT_EQ(j["travel"], where);
+  EXPECT_EQ(j["limit_violations"], 2);  // X 250 and X 260
+}
+
 TEST(TpoptCliPicturesTest, EvaluateWritesAnHtmlReportAndAVtpScene) {
   TempDir dir;
   const std::string cam = CamPath(dir, 60);
