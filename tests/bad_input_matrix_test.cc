@@ -208,8 +208,8 @@ TEST_F(BadInputMatrixTest, DegeneratePathsNeverCrashOrLeaveHalfFiles) {
 
 // A very large program (600,000 moves, about 30 MB) with one bad number on
 // its last line: the reader streams it, so the error names that line, the
-// whole run stays within a memory bound far below what a quadratic or
-// per-line-allocating reader would need, and nothing is written.
+// whole run stays within a memory bound far below what a quadratic reader
+// would need, and nothing is written.
 TEST_F(BadInputMatrixTest, VeryLargeInputStreamsToTheErrorOnItsLastLine) {
   constexpr int kMoves = 600000;
   const std::string in = dir_.File("large.cls");
@@ -229,9 +229,11 @@ TEST_F(BadInputMatrixTest, VeryLargeInputStreamsToTheErrorOnItsLastLine) {
   EXPECT_FALSE(FileExists(dir_.File("large.json")));
   struct rusage usage {};
   ASSERT_EQ(getrusage(RUSAGE_CHILDREN, &usage), 0);
-  // ru_maxrss is in KiB on Linux. 600,000 poses hold about 60 MB; the
-  // sanitizer build roughly triples that.
-  EXPECT_LT(usage.ru_maxrss, 600 * 1024) << "peak memory of the largest child, KiB";
+  // ru_maxrss is in KiB on Linux. 600,000 poses hold about 60 MB, and the
+  // program's blocks (model/program.h: each line's text, so that a written
+  // program is the user's own) about as much again; the sanitizer build
+  // roughly triples that.
+  EXPECT_LT(usage.ru_maxrss, 800 * 1024) << "peak memory of the largest child, KiB";
 }
 
 }  // namespace
