@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <regex>
 #include <sstream>
@@ -29,30 +30,39 @@ struct CanonMove {
   double v[5];  // x y z a c
 };
 
-// Runs rs274 on `file`; fails the test on any line that is not a canonical
-// call (an interpreter error), and returns the moves it printed.
-std::vector<CanonMove> Interpret(const std::string& file) {
-  const testing::CommandResult r = testing::RunCommand(std::string(kRs274) + " -g " + file);
+// Runs rs274 with `arguments` on `file` and calls `on_call(name, args)` for
+// each canonical call it prints; fails the test, naming `source`, on any
+// other line (an interpreter error) and on a non-zero exit.
+void ForEachCanonCall(const std::string& file, const std::string& source,
+                      const std::string& arguments,
+                      const std::function<void(const std::string&, const std::string&)>& on_call) {
+  const testing::CommandResult r =
+      testing::RunCommand(std::string(kRs274) + " " + arguments + " -g " + file);
   EXPECT_EQ(r.exit_code, 0) << r.output;
-  std::vector<CanonMove> moves;
   std::istringstream lines(r.output);
-  std::string line;
   const std::regex canon(R"(^\s*\d+ N\.\.\.\.\. ([A-Z_0-9]+)\((.*)\)\s*$)");
-  while (std::getline(lines, line)) {
+  for (std::string line; std::getline(lines, line);) {
     std::smatch m;
     if (line == "executing") continue;
     if (!std::regex_match(line, m, canon)) {
-      ADD_FAILURE() << file << ": interpreter said: " << line;
+      ADD_FAILURE() << source << ": interpreter said: " << line;
       continue;
     }
-    const std::string call = m[1];
-    if (call != "STRAIGHT_FEED" && call != "STRAIGHT_TRAVERSE") continue;
+    on_call(m[1], m[2]);
+  }
+}
+
+// The moves rs274 prints for `file`.
+std::vector<CanonMove> Interpret(const std::string& file) {
+  std::vector<CanonMove> moves;
+  ForEachCanonCall(file, file, "", [&moves](const std::string& call, const std::string& args) {
+    if (call != "STRAIGHT_FEED" && call != "STRAIGHT_TRAVERSE") return;
     CanonMove move{call == "STRAIGHT_FEED", {}};
     double b = 0;
-    std::sscanf(m[2].str().c_str(), "%lf, %lf, %lf, %lf, %lf, %lf", &move.v[0], &move.v[1],
+    std::sscanf(args.c_str(), "%lf, %lf, %lf, %lf, %lf, %lf", &move.v[0], &move.v[1],
                 &move.v[2], &move.v[3], &b, &move.v[4]);
     moves.push_back(move);
-  }
+  });
   return moves;
 }
 
@@ -487,23 +497,13 @@ struct Canon {
 Canon InterpretAll(const std::string& file, const testing::TempDir& dir) {
   const std::string copy = dir.File("rs274_input.ngc");
   WithoutTcpSwitchCopy(file, copy);
-  const testing::CommandResult r =
-      testing::RunCommand(std::string(kRs274) + " -t " + kToolTable + " -g " + copy);
-  EXPECT_EQ(r.exit_code, 0) << r.output;
   Canon canon;
-  std::istringstream lines(r.output);
-  const std::regex call(R"(^\s*\d+ N\.\.\.\.\. (([A-Z_0-9]+)\(.*\))\s*$)");
-  for (std::string line; std::getline(lines, line);) {
-    std::smatch m;
-    if (line == "executing") continue;
-    if (!std::regex_match(line, m, call)) {
-      ADD_FAILURE() << file << ": interpreter said: " << line;
-      continue;
-    }
-    const std::string name = m[2];
-    const bool feed = name == "STRAIGHT_FEED" || name == "SET_FEED_RATE" || name == "SET_FEED_MODE";
-    (feed ? canon.feeds : canon.others).push_back(m[1]);
-  }
+  ForEachCanonCall(copy, file, std::string("-t ") + kToolTable,
+                   [&canon](const std::string& name, const std::string& args) {
+                     const bool feed = name == "STRAIGHT_FEED" || name == "SET_FEED_RATE" ||
+                                       name == "SET_FEED_MODE";
+                     (feed ? canon.feeds : canon.others).push_back(name + "(" + args + ")");
+                   });
   return canon;
 }
 
