@@ -6,10 +6,10 @@
 // own evaluation, Jacobian block and normal-matrix product whether or not
 // its residuals vanish, and the walls act at hardly any pose. Each wall is
 // one-sided, max(0, f) in form, so Evaluate first computes every wall in
-// double and differentiates (automatically) only the walls whose residuals
-// are not all zero. A wall that does not act has residual 0 and Jacobian
-// exactly 0 there, which is what its own AutoDiffCostFunction returns, so
-// the block equals the three functors stacked, value and Jacobian.
+// double and differentiates (automatically, with Jets) only the walls whose
+// residuals are not all zero. A wall that does not act has residual 0 and
+// Jacobian exactly 0 there, which is what its own AutoDiffCostFunction returns,
+// so the block equals the three functors stacked, value and Jacobian.
 //
 // Residual rows, in order: travel (3), cone (1), side (2), each present
 // only when given; at least one wall is required.
@@ -20,7 +20,6 @@
 #include <glog/logging.h>
 
 #include <algorithm>
-#include <memory>
 #include <optional>
 
 #include "solver/axis_cone_cost.h"
@@ -39,10 +38,8 @@ class WallCost : public ceres::CostFunction {
   };
 
   explicit WallCost(const Walls& walls) : walls_(walls) {
-    int rows = 0;
-    if (walls_.travel) travel_ = AutoDiff<3>(*walls_.travel, &rows);
-    if (walls_.cone) cone_ = AutoDiff<1>(*walls_.cone, &rows);
-    if (walls_.side) side_ = AutoDiff<2>(*walls_.side, &rows);
+    const int rows =
+        (walls_.travel ? 3 : 0) + (walls_.cone ? 1 : 0) + (walls_.side ? 2 : 0);
     CHECK_GT(rows, 0) << "WallCost needs at least one wall";
     set_num_residuals(rows);
     mutable_parameter_block_sizes()->push_back(kPoseSize);
@@ -52,46 +49,42 @@ class WallCost : public ceres::CostFunction {
                 double** jacobians) const override {
     double* jacobian = jacobians != nullptr ? jacobians[0] : nullptr;
     int row = 0;
-    return (!walls_.travel ||
-            EvaluateWall<3>(*walls_.travel, *travel_, parameters, residuals,
-                            jacobian, &row)) &&
-           (!walls_.cone || EvaluateWall<1>(*walls_.cone, *cone_, parameters,
+    return (!walls_.travel || EvaluateWall<3>(*walls_.travel, parameters[0],
+                                              residuals, jacobian, &row)) &&
+           (!walls_.cone || EvaluateWall<1>(*walls_.cone, parameters[0],
                                             residuals, jacobian, &row)) &&
-           (!walls_.side || EvaluateWall<2>(*walls_.side, *side_, parameters,
+           (!walls_.side || EvaluateWall<2>(*walls_.side, parameters[0],
                                             residuals, jacobian, &row));
   }
 
  private:
+  // Rows *row.. of the block from one wall; advances *row. The Jacobian by
+  // forward-mode automatic differentiation (one Jet per pose parameter),
+  // as AutoDiffCostFunction<Functor, kRows, kPoseSize> computes it.
   template <int kRows, typename Functor>
-  static std::unique_ptr<ceres::CostFunction> AutoDiff(const Functor& functor,
-                                                       int* rows) {
-    *rows += kRows;
-    return std::make_unique<
-        ceres::AutoDiffCostFunction<Functor, kRows, kPoseSize>>(
-        new Functor(functor));
-  }
-
-  // Rows *row.. of the block from one wall; advances *row.
-  template <int kRows, typename Functor>
-  static bool EvaluateWall(const Functor& functor,
-                           const ceres::CostFunction& autodiff,
-                           double const* const* parameters, double* residuals,
-                           double* jacobian, int* row) {
+  static bool EvaluateWall(const Functor& functor, const double* pose,
+                           double* residuals, double* jacobian, int* row) {
     double* r = residuals + *row;
     double* j = jacobian != nullptr ? jacobian + *row * kPoseSize : nullptr;
     *row += kRows;
-    if (!functor(parameters[0], r)) return false;
+    if (!functor(pose, r)) return false;
     if (j == nullptr) return true;
     if (std::all_of(r, r + kRows, [](double x) { return x == 0.0; })) {
       std::fill(j, j + kRows * kPoseSize, 0.0);
       return true;
     }
-    double* wall_jacobians[] = {j};
-    return autodiff.Evaluate(parameters, r, wall_jacobians);
+    using Jet = ceres::Jet<double, kPoseSize>;
+    Jet pose_jets[kPoseSize], r_jets[kRows];
+    for (int c = 0; c < kPoseSize; ++c) pose_jets[c] = Jet(pose[c], c);
+    if (!functor(pose_jets, r_jets)) return false;
+    for (int k = 0; k < kRows; ++k) {
+      r[k] = r_jets[k].a;
+      for (int c = 0; c < kPoseSize; ++c) j[k * kPoseSize + c] = r_jets[k].v[c];
+    }
+    return true;
   }
 
   Walls walls_;
-  std::unique_ptr<ceres::CostFunction> travel_, cone_, side_;
 };
 
 }  // namespace tpopt
