@@ -153,9 +153,9 @@ INSTANTIATE_TEST_SUITE_P(
 // The blade twisted by 70 deg with the cutter on its - side is refused: "the
 // best path found is 0.0541 mm into the surface at (u 0, v 0), where the
 // input was 0.000149 mm: beyond the tolerance of 0.01 mm at 5 of 4200 grid
-// points, after 4 rounds". Not a wall's doing (the solve is the same with
-// w_walls = 0): the end pose leaves the input's contact at the surface's
-// end, which the pipeline's end handling and tolerance active set own.
+// points, after 4 rounds". Not a wall's doing (it is refused with
+// w_walls = 0 too): the excess is at the surface's end, u = 0, which the
+// pipeline's end handling and tolerance active set own.
 INSTANTIATE_TEST_SUITE_P(DISABLED_RefusedAtTheSurfacesEnd,
                          HighAccuracyTwistedSurfacesTest,
                          ::testing::Values(TwistedCase{"TwistedBlade70Minus",
