@@ -12,15 +12,13 @@
 #include "model/axis_metrics.h"
 #include "model/rail_projection.h"
 #include "solver/coarse_to_fine.h"
-#include "solver/axis_cone_cost.h"
 #include "solver/axis_limit_cost.h"
 #include "solver/deviation_cost.h"
 #include "solver/overhang.h"
 #include "solver/smoothness_cost.h"
-#include "solver/surface_side_cost.h"
 #include "solver/tip_height_cost.h"
 #include "solver/tolerance_band_cost.h"
-#include "solver/travel_cost.h"
+#include "solver/wall_cost.h"
 
 namespace tpopt {
 namespace {
@@ -237,25 +235,23 @@ void AddWallFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, doub
     const double h = std::max(
         (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2, kMinStep);
     const double scale = std::sqrt(o.w_walls * h / length_mm);
-    std::vector<ceres::ResidualBlockId>& ids = state->families["walls"];
-    double* pose = state->poses[i].data();
-    if (any_travel) {
-      ids.push_back(problem->AddResidualBlock(
-          TravelCost::Create(in.machine->kinematics, lo, hi, o.travel_margin_mm, scale), nullptr,
-          pose));
+    WallCost::Walls walls;
+    if (any_travel) walls.travel.emplace(in.machine->kinematics, lo, hi, o.travel_margin_mm, scale);
+    if (in.surface != nullptr) {
+      const ToolPose& input = path.poses[i];
+      walls.cone.emplace(input.a_w, o.axis_cone_deg * M_PI / 180.0, scale);
+      std::array<SurfaceSideCost::End, 2> ends;
+      for (int k = 0; k < 2; ++k) {
+        ends[k].q_w = in.surface->Point(state->u[i], k);
+        ends[k].normal_w = in.surface->Normal(state->u[i], k);
+        const double height_mm = (ends[k].q_w - input.p_w_tip).dot(input.a_w);
+        ends[k].radius_mm = std::max(in.cutter->RadiusAt(height_mm), 1e-3);
+      }
+      walls.side.emplace(ends, scale);
     }
-    if (in.surface == nullptr) continue;
-    const ToolPose& input = path.poses[i];
-    ids.push_back(problem->AddResidualBlock(
-        AxisConeCost::Create(input.a_w, o.axis_cone_deg * M_PI / 180.0, scale), nullptr, pose));
-    std::array<SurfaceSideCost::End, 2> ends;
-    for (int k = 0; k < 2; ++k) {
-      ends[k].q_w = in.surface->Point(state->u[i], k);
-      ends[k].normal_w = in.surface->Normal(state->u[i], k);
-      const double height_mm = (ends[k].q_w - input.p_w_tip).dot(input.a_w);
-      ends[k].radius_mm = std::max(in.cutter->RadiusAt(height_mm), 1e-3);
-    }
-    ids.push_back(problem->AddResidualBlock(SurfaceSideCost::Create(ends, scale), nullptr, pose));
+    if (!walls.travel && !walls.cone) continue;
+    state->families["walls"].push_back(
+        problem->AddResidualBlock(new WallCost(walls), nullptr, state->poses[i].data()));
   }
 }
 

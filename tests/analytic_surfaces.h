@@ -1,15 +1,19 @@
 // Closed-form surfaces for strip-width tests: a plane, a sphere and a
-// circular cylinder over (u, v) in [0, 1]^2, with exact partials.
+// circular cylinder over (u, v) in [0, 1]^2, with exact partials; and ruled
+// surfaces the shared data do not have (a strongly twisted blade, a
+// helicoid strip) for the high-accuracy mode.
 #ifndef TPOPT_TESTS_ANALYTIC_SURFACES_H_
 #define TPOPT_TESTS_ANALYTIC_SURFACES_H_
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <glog/logging.h>
 
 #include "model/freeform_surface.h"
 #include "model/parametric_surface.h"
+#include "model/ruled_surface.h"
 
 namespace tpopt::testing {
 
@@ -111,6 +115,65 @@ inline FreeformSurface MakeSaddle(double k, double half_size_mm, const std::vect
   const Status s = FreeformSurface::Create("saddle", knots, knots, net, 1.0, "saddle", &surface);
   CHECK(s.ok()) << s.message();
   return surface;
+}
+
+// One straight ruling: its foot on rail 0, unit direction, length.
+struct Ruling {
+  Eigen::Vector3d foot_w, direction_w;
+  double length_mm;
+};
+
+// A ruled surface through the rulings `ruling(t)`, t in [0, 1]: both rails
+// are cubic B-splines on `spans` uniform spans whose control points are the
+// feet and far ends of the rulings at the Greville abscissae, so each
+// control-point pair spans one closed-form ruling (the surface's rulings
+// between them are blends).
+template <typename RulingAt>
+RuledSurface RuledThrough(const std::string& name, int spans, CutterSide side, RulingAt ruling) {
+  constexpr int kDegree = 3;
+  std::vector<double> knots(kDegree, 0.0);
+  for (int k = 0; k <= spans; ++k) knots.push_back(static_cast<double>(k) / spans);
+  knots.insert(knots.end(), kDegree, 1.0);
+  std::vector<Eigen::Vector3d> feet, ends;
+  for (int i = 0; i < spans + kDegree; ++i) {
+    const double greville = (knots[i + 1] + knots[i + 2] + knots[i + 3]) / kDegree;
+    const Ruling r = ruling(greville);
+    feet.push_back(r.foot_w);
+    ends.push_back(r.foot_w + r.length_mm * r.direction_w);
+  }
+  BSplineCurve rail0, rail1;
+  CHECK(BSplineCurve::Create(kDegree, knots, feet, name + " rail 0", &rail0).ok());
+  CHECK(BSplineCurve::Create(kDegree, knots, ends, name + " rail 1", &rail1).ok());
+  return RuledSurface(name, rail0, rail1, side);
+}
+
+// A strongly twisted impeller blade (issue 16, item 2): the hub (rail 0) is
+// an arc of radius 40 mm about the z axis over psi in [-30, 30] deg, through
+// the origin at psi = 0; the 25 mm ruling leans from +z towards the outward
+// radial direction n(psi) by lambda = 45 deg + twist (u - 1/2), i.e. it
+// turns about the hub's tangent by `twist_deg` end to end (non-developable:
+// the turn is about the rail itself). Polar angles 45 -/+ twist/2 deg.
+inline RuledSurface TwistedBlade(double twist_deg) {
+  const double twist = twist_deg * M_PI / 180;
+  return RuledThrough("twisted blade", 10, CutterSide::kPositive, [&](double u) {
+    const double psi = (u - 0.5) * M_PI / 3, lambda = M_PI / 4 + twist * (u - 0.5);
+    const Eigen::Vector3d radial(std::sin(psi), std::cos(psi), 0.0);
+    return Ruling{40.0 * radial - Eigen::Vector3d(0, 40, 0),
+                  std::cos(lambda) * Eigen::Vector3d::UnitZ() + std::sin(lambda) * radial, 25.0};
+  });
+}
+
+// A helicoid strip (issue 16, item 2): rulings through the x axis and normal
+// to it, at height x = 60 (u - 1/2) mm pointing along (0, sin theta,
+// cos theta), theta = 45 deg + twist (u - 1/2), between 8 and 33 mm from
+// the axis. The rails are helices (on their control points).
+inline RuledSurface HelicoidStrip(double twist_deg) {
+  const double twist = twist_deg * M_PI / 180;
+  return RuledThrough("helicoid strip", 10, CutterSide::kPositive, [&](double u) {
+    const double theta = M_PI / 4 + twist * (u - 0.5);
+    const Eigen::Vector3d direction(0.0, std::sin(theta), std::cos(theta));
+    return Ruling{Eigen::Vector3d(60.0 * (u - 0.5), 0, 0) + 8.0 * direction, direction, 25.0};
+  });
 }
 
 }  // namespace tpopt::testing
