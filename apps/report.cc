@@ -47,6 +47,7 @@ nlohmann::json MetricsJson(const PathMetrics& metrics) {
   j["limit_violations"] = metrics.motion.limit_violations;
   j["worst_violation_pose"] = metrics.motion.worst_violation_pose;
   j["machining_time_s"] = metrics.motion.machining_time_s;
+  j["planner_time_s"] = metrics.motion.planner_time_s;
   j["path_length_mm"] = metrics.motion.path_length_mm;
   if (!metrics.warning.empty()) j["warning"] = metrics.warning;
   return j;

@@ -50,7 +50,7 @@ Status WriteOutputs(const Invocation& invocation, const Job& job, const Smoothin
     if (job.surface_cad) report["surface_cad"] = CadInfoJson(*job.surface_cad);
     if (job.controller) {
       report["controller"] =
-          ControllerRunJson(*job.controller, result.output_metrics.motion.machining_time_s);
+          ControllerRunJson(*job.controller, result.output_metrics.motion.planner_time_s);
     }
     report["interpolation"] = InterpolationName(interpolation);
     s = WriteReport(FLAGS_report, report);
