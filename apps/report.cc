@@ -111,6 +111,7 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                              {"moves_raised", result.feed.moves_raised},
                              {"min_feed_mm_per_min", result.feed.min_feed_mm_per_min},
                              {"max_feed_mm_per_min", result.feed.max_feed_mm_per_min},
+                             {"runs_retimed", result.feed.runs_retimed},
                              {"violations_left", result.feed.violations_left}};
   const HighAccuracyReport& ha = result.high_accuracy;
   report["iterations"] = ha.iterations;

@@ -74,8 +74,9 @@ PlannerMove PlanMove(const Machine& machine, const ToolPath& path,
     }
   }
   move.tangential_acceleration = options.blend_acceleration_fraction * a_move;
-  move.max_speed =
-      std::min(v_move, std::sqrt(move.tangential_acceleration * move.length));
+  move.axis_speed = v_move;
+  move.triangle_speed = std::sqrt(move.tangential_acceleration * move.length);
+  move.max_speed = std::min(move.axis_speed, move.triangle_speed);
   move.speed = std::min(move.requested_speed, move.max_speed);
   return move;
 }

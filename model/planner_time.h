@@ -44,8 +44,9 @@ struct PlannerMove {
   double length = 0.0;
   bool rotary_only = false;
   double requested_speed = 0.0;  // its feed: length / SegmentTime
-  double max_speed =
-      0.0;  // min(v_move, sqrt(a_t L)): what it can reach at most
+  double axis_speed = 0.0;      // v_move: each axis within its velocity limit
+  double triangle_speed = 0.0;  // sqrt(a_t L): reached and left within it
+  double max_speed = 0.0;       // min(axis_speed, triangle_speed)
   double tangential_acceleration = 0.0;  // a_t
   double speed = 0.0;                    // min(requested_speed, max_speed)
 };
