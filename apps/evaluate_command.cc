@@ -75,7 +75,7 @@ int RunEvaluate(const Invocation& invocation) {
   report["solve_time_s"] = 0.0;
   report["iterations"] = 0;
   if (job.controller) {
-    report["controller"] = ControllerRunJson(*job.controller, metrics.motion.machining_time_s);
+    report["controller"] = ControllerRunJson(*job.controller, metrics.motion.planner_time_s);
   }
   // What `tpopt smooth` refuses the path for, said here too: the first pose
   // outside an axis's travel, as smooth names it.

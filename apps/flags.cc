@@ -152,7 +152,16 @@ DEFINE_string(cnc_summary, "",
 DEFINE_string(feed_mode, "lower",
               "smooth, with --schedule_feed: lower (feeds only come down, where a limit needs) "
               "or raise (every feed move starts at min(--max_feed_mm_per_min, "
-              "--max_feed_factor x its programmed feed) and comes down where a limit needs).");
+              "--max_feed_factor x its programmed feed) and comes down where a limit needs) "
+              "or keep_run_time (each cutting run keeps its time at the programmed feeds, spread "
+              "over its moves by the program's tip speed averaged over "
+              "--keep_run_time_window_mm; then lowered where a limit needs).");
+DEFINE_bool(raise_within_input_peaks, true,
+            "smooth, --feed_mode=raise: no axis's acceleration or jerk above the input "
+            "program's own peak over its cuts (nor above the machine's limit).");
+DEFINE_double(keep_run_time_window_mm, 10.0,
+              "smooth, --feed_mode=keep_run_time: path length over which the program's tip "
+              "speed is averaged, mm (> 0; inf = one speed per run).");
 DEFINE_double(max_feed_mm_per_min, 0.0,
               "smooth, --feed_mode=raise: highest feed of any move, mm/min (0 = no cap but "
               "--max_feed_factor).");

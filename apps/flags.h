@@ -88,6 +88,8 @@ DECLARE_string(feed_mode);
 DECLARE_string(cnc_summary);
 DECLARE_double(max_feed_mm_per_min);
 DECLARE_double(max_feed_factor);
+DECLARE_bool(raise_within_input_peaks);
+DECLARE_double(keep_run_time_window_mm);
 DECLARE_double(max_feed_step);
 DECLARE_double(resample_step_mm);
 // stripwidth

@@ -185,7 +185,7 @@ std::string Versions() {
 std::string ControllerSection(const HtmlReportInputs& inputs) {
   if (inputs.controller == nullptr || inputs.paths.empty()) return "";
   return ControllerRunHtml(*inputs.controller,
-                           inputs.paths.back().metrics->motion.machining_time_s);
+                           inputs.paths.back().metrics->motion.planner_time_s);
 }
 
 }  // namespace

@@ -47,6 +47,7 @@ nlohmann::json MetricsJson(const PathMetrics& metrics) {
   j["limit_violations"] = metrics.motion.limit_violations;
   j["worst_violation_pose"] = metrics.motion.worst_violation_pose;
   j["machining_time_s"] = metrics.motion.machining_time_s;
+  j["planner_time_s"] = metrics.motion.planner_time_s;
   j["path_length_mm"] = metrics.motion.path_length_mm;
   if (!metrics.warning.empty()) j["warning"] = metrics.warning;
   return j;
@@ -110,6 +111,7 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                              {"moves_raised", result.feed.moves_raised},
                              {"min_feed_mm_per_min", result.feed.min_feed_mm_per_min},
                              {"max_feed_mm_per_min", result.feed.max_feed_mm_per_min},
+                             {"runs_retimed", result.feed.runs_retimed},
                              {"violations_left", result.feed.violations_left}};
   const HighAccuracyReport& ha = result.high_accuracy;
   report["iterations"] = ha.iterations;

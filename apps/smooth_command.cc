@@ -50,7 +50,7 @@ Status WriteOutputs(const Invocation& invocation, const Job& job, const Smoothin
     if (job.surface_cad) report["surface_cad"] = CadInfoJson(*job.surface_cad);
     if (job.controller) {
       report["controller"] =
-          ControllerRunJson(*job.controller, result.output_metrics.motion.machining_time_s);
+          ControllerRunJson(*job.controller, result.output_metrics.motion.planner_time_s);
     }
     report["interpolation"] = InterpolationName(interpolation);
     s = WriteReport(FLAGS_report, report);
@@ -132,10 +132,15 @@ int RunSmooth(const Invocation& invocation) {
   settings.judge_on_input_range = FLAGS_judge_on_input_range;
   settings.resample_step_mm = FLAGS_resample_step_mm;
   settings.feed.default_feed_mm_per_min = FLAGS_feed;
-  if (s.ok() && FLAGS_feed_mode != "lower" && FLAGS_feed_mode != "raise") {
-    s = Status::Error("--feed_mode=" + FLAGS_feed_mode + " must be lower or raise");
+  if (s.ok() && FLAGS_feed_mode != "lower" && FLAGS_feed_mode != "raise" &&
+      FLAGS_feed_mode != "keep_run_time") {
+    s = Status::Error("--feed_mode=" + FLAGS_feed_mode + " must be lower, raise or keep_run_time");
   }
-  settings.feed.mode = FLAGS_feed_mode == "raise" ? FeedMode::kRaise : FeedMode::kLower;
+  settings.feed.mode = FLAGS_feed_mode == "raise"           ? FeedMode::kRaise
+                       : FLAGS_feed_mode == "keep_run_time" ? FeedMode::kKeepRunTime
+                                                            : FeedMode::kLower;
+  settings.feed.keep_input_peaks = FLAGS_raise_within_input_peaks;
+  settings.feed.keep_run_time_window_mm = FLAGS_keep_run_time_window_mm;
   if (FLAGS_max_feed_mm_per_min != 0.0) {
     settings.feed.max_feed_mm_per_min = FLAGS_max_feed_mm_per_min;
   }

@@ -6,6 +6,8 @@
 
 #include <glog/logging.h>
 
+#include "model/planner_time.h"
+
 namespace tpopt {
 namespace {
 
@@ -156,6 +158,9 @@ MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,
     }
   }
   for (const AxisMotion& a : report.axes) report.limit_violations += a.limit_violations;
+  PlannerOptions planner;
+  planner.default_feed_mm_per_min = options.default_feed_mm_per_min;
+  report.planner_time_s = PredictPlannerTime(machine, path, joints, planner).time_s;
   return report;
 }
 

@@ -43,6 +43,10 @@ struct MotionReport {
   std::array<AxisMotion, 5> axes;  // indexed by Axis
   int limit_violations = 0;        // sum over the axes
   double machining_time_s = 0.0;
+  // The time on a blending planner (model/planner_time.h): the feed moves'
+  // ramps and the speed short moves cannot reach, which machining_time_s
+  // leaves out.
+  double planner_time_s = 0.0;
   double path_length_mm = 0.0;     // tip path in W over feed moves
   // Index of the pose with the worst limit violation, -1 if none.
   int worst_violation_pose = -1;

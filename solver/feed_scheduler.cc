@@ -7,6 +7,7 @@
 #include <glog/logging.h>
 
 #include "model/axis_metrics.h"
+#include "model/planner_time.h"
 
 namespace tpopt {
 namespace {
@@ -62,6 +63,21 @@ MotionSamples CorrectPass(const Machine& machine, const std::vector<JointVector>
   return m;
 }
 
+// `machine` with kRaise's ceilings: each axis's acceleration and jerk limit
+// no higher than the input's own peak (where the input has one).
+Machine RaiseLimits(const Machine& machine, const FeedScheduleOptions& options) {
+  Machine capped = machine;
+  if (!options.keep_input_peaks) return capped;
+  for (int a = 0; a < 5; ++a) {
+    AxisLimits& lim = capped.limits[a];
+    const double peak_acceleration = options.input_peak_acceleration[a];
+    const double peak_jerk = options.input_peak_jerk[a];
+    if (peak_acceleration > 0) lim.max_acceleration = std::min(lim.max_acceleration, peak_acceleration);
+    if (peak_jerk > 0) lim.max_jerk = std::min(lim.max_jerk, peak_jerk);
+  }
+  return capped;
+}
+
 // kRaise: feed[i] is the feed of the move into pose i. Starts at each
 // move's ceiling; each pass bounds the ratio of neighbouring feeds, then
 // lowers the feeds around every violation; ends when a pass finds none.
@@ -71,26 +87,110 @@ void RaiseFeeds(const Machine& machine, const std::vector<JointVector>& joints,
   const size_t n = path->poses.size();
   const std::vector<bool> cutting =
       ComputeMotionSamples(machine, *path, joints, options.default_feed_mm_per_min).cutting;
+  PlannerOptions planner;
+  planner.default_feed_mm_per_min = options.default_feed_mm_per_min;
   std::vector<double> feed(n, 0.0);
   for (size_t i = 1; i < n; ++i) {
-    feed[i] = std::min(options.max_feed_factor * programmed[i], options.max_feed_mm_per_min);
+    // Never above the speed a blending planner can reach and leave again
+    // within the move, unless the program itself asked for more (the
+    // velocity limits are the passes' below, with their margin).
+    const double reachable_mm_per_min =
+        cutting[i - 1] ? 60.0 * PlanMove(machine, *path, joints, i - 1, planner).triangle_speed
+                       : std::numeric_limits<double>::infinity();
+    feed[i] = std::min({options.max_feed_factor * programmed[i], options.max_feed_mm_per_min,
+                        std::max(programmed[i], reachable_mm_per_min)});
   }
+  const Machine capped = RaiseLimits(machine, options);
   const double step = 1.0 + options.max_feed_step;
-  for (int pass = 0; pass < options.max_passes; ++pass) {
-    // Segment i is the move into pose i + 1.
+  // Bounds the ratio of neighbouring feed moves, forwards and backwards.
+  auto bound_steps = [&](std::vector<double>* f) {
     for (size_t i = 1; i + 1 < n; ++i) {
-      if (cutting[i] && cutting[i - 1]) feed[i + 1] = std::min(feed[i + 1], feed[i] * step);
+      if (cutting[i] && cutting[i - 1]) (*f)[i + 1] = std::min((*f)[i + 1], (*f)[i] * step);
     }
     for (size_t i = n - 1; i-- > 1;) {
-      if (cutting[i] && cutting[i - 1]) feed[i] = std::min(feed[i], feed[i + 1] * step);
+      if (cutting[i] && cutting[i - 1]) (*f)[i] = std::min((*f)[i], (*f)[i + 1] * step);
     }
+  };
+  // The input's peaks never bring a feed below the programmed one (within
+  // the step): the program had them at its own feeds, and a ceiling that
+  // a feed change itself exceeds would otherwise drive the feeds down
+  // without end. The machine's limits may.
+  std::vector<double> floor = programmed;
+  bound_steps(&floor);
+  for (int pass = 0; pass < options.max_passes; ++pass) {
+    bound_steps(&feed);
     for (size_t i = 1; i < n; ++i) {
       if (cutting[i - 1]) path->poses[i].feed_mm_per_min = feed[i];
     }
-    std::vector<double> scale;
-    CorrectPass(machine, joints, options, *path, pass, &scale, report);
-    if (report->violations_left == 0) break;
-    for (size_t i = 0; i + 1 < n; ++i) feed[i + 1] *= scale[i];
+    std::vector<double> scale_input, scale_machine;
+    CorrectPass(capped, joints, options, *path, pass, &scale_input, report);
+    const int input_violations = report->violations_left;
+    CorrectPass(machine, joints, options, *path, pass, &scale_machine, report);
+    if (input_violations == 0 && report->violations_left == 0) break;
+    bool changed = false;
+    for (size_t i = 0; i + 1 < n; ++i) {
+      const double f = std::min(std::max(floor[i + 1], feed[i + 1] * scale_input[i]),
+                                feed[i + 1] * scale_machine[i]);
+      changed |= f < feed[i + 1] * (1 - 1e-12);
+      feed[i + 1] = std::min(feed[i + 1], f);
+    }
+    if (!changed) break;  // what is left of the input's peaks is the program's own
+  }
+}
+
+// kKeepRunTime: spreads each cutting run's time over its moves in
+// proportion to the run's smoothed tip speed (see the header).
+void KeepRunTimes(const Machine& machine, const std::vector<JointVector>& joints,
+                  const FeedScheduleOptions& options, ToolPath* path,
+                  FeedScheduleReport* report) {
+  const MotionSamples m =
+      ComputeMotionSamples(machine, *path, joints, options.default_feed_mm_per_min);
+  const size_t segments = m.dt_s.size();
+  // Segment i is the move into pose i + 1. Rotary-only moves, whose feed
+  // is in degrees, end a run as positioning moves do.
+  auto in_run = [&](size_t i) {
+    return m.cutting[i] && !IsPositioningMove(path->poses[i + 1]) && m.ds_mm[i] > 1e-9;
+  };
+  const double half_window = 0.5 * options.keep_run_time_window_mm;
+  for (size_t b = 0; b < segments;) {
+    if (!in_run(b)) {
+      ++b;
+      continue;
+    }
+    size_t e = b;
+    while (e < segments && in_run(e)) ++e;
+    // Run [b, e): mean speed over the window around each move's middle.
+    std::vector<double> s_mid(e - b);
+    double s = 0.0, run_time_s = 0.0;
+    for (size_t i = b; i < e; ++i) {
+      s_mid[i - b] = s + 0.5 * m.ds_mm[i];
+      s += m.ds_mm[i];
+      run_time_s += m.dt_s[i];
+    }
+    std::vector<double> speed(e - b);
+    size_t lo = 0, hi = 0;  // window [lo, hi) of the run's moves
+    double length = 0.0, time = 0.0;
+    for (size_t j = 0; j < e - b; ++j) {
+      while (hi < e - b && s_mid[hi] <= s_mid[j] + half_window) {
+        length += m.ds_mm[b + hi];
+        time += m.dt_s[b + hi];
+        ++hi;
+      }
+      while (s_mid[lo] < s_mid[j] - half_window) {
+        length -= m.ds_mm[b + lo];
+        time -= m.dt_s[b + lo];
+        ++lo;
+      }
+      speed[j] = length / time;
+    }
+    double new_time_s = 0.0;
+    for (size_t j = 0; j < e - b; ++j) new_time_s += m.ds_mm[b + j] / speed[j];
+    const double scale = new_time_s / run_time_s;
+    for (size_t j = 0; j < e - b; ++j) {
+      path->poses[b + j + 1].feed_mm_per_min = 60.0 * speed[j] * scale;
+    }
+    report->runs_retimed += e - b >= 2;
+    b = e;
   }
 }
 
@@ -110,6 +210,8 @@ bool FeedScheduleOptions::IsValid(std::string* why) const {
     err << "max feed " << max_feed_mm_per_min << " mm/min must be > 0";
   } else if (!(max_feed_factor >= 1) || !std::isfinite(max_feed_factor)) {
     err << "max feed factor " << max_feed_factor << " must be >= 1";
+  } else if (!(keep_run_time_window_mm > 0)) {
+    err << "keep-run-time window " << keep_run_time_window_mm << " mm must be > 0";
   } else {
     return true;
   }
@@ -132,8 +234,9 @@ Status ScheduleFeed(const Machine& machine, const std::vector<JointVector>& join
     programmed[i] = f > 0 ? f : options.default_feed_mm_per_min;
     path->poses[i].feed_mm_per_min = programmed[i];
   }
+  if (options.mode == FeedMode::kKeepRunTime) KeepRunTimes(machine, joints, options, path, report);
   const double step = 1.0 + options.max_feed_step;
-  for (int pass = 0; options.mode == FeedMode::kLower && pass < options.max_passes; ++pass) {
+  for (int pass = 0; options.mode != FeedMode::kRaise && pass < options.max_passes; ++pass) {
     std::vector<double> scale;
     const MotionSamples m = CorrectPass(machine, joints, options, *path, pass, &scale, report);
     if (report->violations_left == 0) break;

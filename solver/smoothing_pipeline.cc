@@ -307,7 +307,12 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   std::vector<JointVector> joints;
   stage("scheduling the feed");
   s = job.machine->AssignJoints(result->output, &joints);
-  if (s.ok()) s = ScheduleFeed(*job.machine, joints, settings.feed, &result->output, &result->feed);
+  FeedScheduleOptions feed = settings.feed;
+  for (int a = 0; a < 5; ++a) {  // what raised feeds may ask of each axis at most
+    feed.input_peak_acceleration[a] = result->input_metrics.motion.axes[a].peak_acceleration;
+    feed.input_peak_jerk[a] = result->input_metrics.motion.axes[a].peak_jerk;
+  }
+  if (s.ok()) s = ScheduleFeed(*job.machine, joints, feed, &result->output, &result->feed);
   if (s.ok()) s = evaluate("the output as written", result->output, &result->output_metrics);
   if (!s.ok()) return Fail(SmoothingFailure::kSolver, "feed scheduling: " + s.message(), failure);
   return Status::Ok();

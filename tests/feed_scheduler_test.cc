@@ -1,7 +1,9 @@
 #include "solver/feed_scheduler.h"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -19,14 +21,20 @@ struct Scheduled {
   FeedScheduleReport report;
 };
 
+// The path at `feed_mm_per_min`. Raising a feed needs one below what the
+// planner can reach on the moves (model/planner_time.h): on the hypar's
+// 0.2 mm moves jcde2022's rotary limits allow a_t = 38 mm/s^2 along the
+// path, so 60 sqrt(a_t L) = 165 mm/min.
 Scheduled GenerateAndSchedule(const std::string& surface_name, const std::string& machine_name, double noise_deg,
-                              const FeedScheduleOptions& options = FeedScheduleOptions()) {
+                              const FeedScheduleOptions& options = FeedScheduleOptions(),
+                              double feed_mm_per_min = 1000.0) {
   RuledSurface surface;
   Machine machine;
   EXPECT_TRUE(ReadSurfaceJson(testing::SourcePath("data/surfaces/" + surface_name), &surface).ok());
   EXPECT_TRUE(ReadMachineJson(testing::SourcePath("data/machines/" + machine_name), &machine).ok());
   FlankPathOptions g;
   g.axis_noise_deg = noise_deg;
+  g.feed_mm_per_min = feed_mm_per_min;
   Scheduled s;
   EXPECT_TRUE(GenerateFlankPath(surface, g, &s.path).ok());
   std::vector<JointVector> joints;
@@ -52,11 +60,11 @@ TEST(FeedSchedulerTest, RaisedFeedsOfAGeneratedPathKeepEveryLimitAndTheStep) {
   FeedScheduleOptions raise;
   raise.mode = FeedMode::kRaise;
   raise.max_feed_factor = 3.0;
-  const Scheduled s = GenerateAndSchedule("hypar.json", "jcde2022_ac.json", 0.0, raise);
+  const Scheduled s = GenerateAndSchedule("hypar.json", "jcde2022_ac.json", 0.0, raise, 100.0);
   EXPECT_EQ(s.after.limit_violations, 0);
   EXPECT_GT(s.report.moves_raised, 0);
   EXPECT_LT(s.after.machining_time_s, s.before.machining_time_s);
-  EXPECT_LE(s.report.max_feed_mm_per_min, 3000.0);
+  EXPECT_LE(s.report.max_feed_mm_per_min, 300.0);
   for (size_t i = 2; i < s.path.poses.size(); ++i) {
     const double ratio = s.path.poses[i].feed_mm_per_min / s.path.poses[i - 1].feed_mm_per_min;
     EXPECT_LE(std::max(ratio, 1 / ratio), 1.1 + 1e-12) << i;
@@ -167,6 +175,180 @@ TEST(FeedSchedulerTest, RaisedNeighbouringFeedsStayWithinTheStep) {
   EXPECT_EQ(path.poses.back().feed_mm_per_min, 2000.0);
 }
 
+// Straight moves along X from 0 through `ends_mm`, axis vertical, each
+// taking `times_s` at the programmed feed (an inverse-time program's way).
+ToolPath TimedLineAlongX(const std::vector<double>& ends_mm, const std::vector<double>& times_s) {
+  ToolPath path;
+  ToolPose pose;
+  path.poses.push_back(pose);
+  double x = 0.0;
+  for (size_t k = 0; k < ends_mm.size(); ++k) {
+    pose.p_w_tip.x() = ends_mm[k];
+    pose.feed_mm_per_min = 60.0 * (ends_mm[k] - x) / times_s[k];
+    x = ends_mm[k];
+    path.poses.push_back(pose);
+  }
+  return path;
+}
+
+double PathTime(const Machine& machine, const ToolPath& path) {
+  std::vector<JointVector> joints;
+  EXPECT_TRUE(machine.AssignJoints(path, &joints).ok());
+  return EvaluateMotion(machine, path, joints, MotionOptions()).machining_time_s;
+}
+
+Scheduled ScheduleLine(const Machine& machine, ToolPath path, const FeedScheduleOptions& options) {
+  Scheduled s;
+  std::vector<JointVector> joints;
+  EXPECT_TRUE(machine.AssignJoints(path, &joints).ok());
+  s.before = EvaluateMotion(machine, path, joints, MotionOptions());
+  EXPECT_TRUE(ScheduleFeed(machine, joints, options, &path, &s.report).ok());
+  s.after = EvaluateMotion(machine, path, joints, MotionOptions());
+  s.path = std::move(path);
+  return s;
+}
+
+TEST(FeedSchedulerTest, RaisedFeedsAskNoAxisMoreThanTheInputsOwnPeaks) {
+  // The tip runs along X at 1 mm a move while A tilts from 20 to 30 deg
+  // over x in [55, 65] (a smoothstep) about C = 90 deg: A accelerates there
+  // only. At 3x the feed with the input's A and C peaks as ceilings, A and
+  // C accelerate and jerk no harder than in the input, and the moves away
+  // from the tilt are raised; without the ceilings A accelerates harder.
+  const Machine machine;  // no limits: only the input's peaks bind
+  ToolPath path;
+  for (int k = 0; k <= 120; ++k) {
+    const double u = std::clamp((k - 55) / 10.0, 0.0, 1.0);
+    ToolPose pose;
+    pose.p_w_tip = Eigen::Vector3d(k, 0, 0);
+    pose.a_w = AnglesToAxis((20.0 + 10.0 * u * u * (3 - 2 * u)) * kDeg, 90 * kDeg);
+    pose.feed_mm_per_min = 100.0;
+    path.poses.push_back(pose);
+  }
+  std::vector<JointVector> joints;
+  ASSERT_TRUE(machine.AssignJoints(path, &joints).ok());
+  const MotionReport input = EvaluateMotion(machine, path, joints, MotionOptions());
+  FeedScheduleOptions raise = Raise(3.0, 1e6);
+  raise.keep_input_peaks = false;
+  const Scheduled free = ScheduleLine(machine, path, raise);
+  for (int a : {kA, kC}) {
+    raise.input_peak_acceleration[a] = input.axes[a].peak_acceleration;
+    raise.input_peak_jerk[a] = input.axes[a].peak_jerk;
+  }
+  raise.keep_input_peaks = true;
+  const Scheduled held = ScheduleLine(machine, path, raise);
+  for (int a : {kA, kC}) {
+    EXPECT_LE(held.after.axes[a].peak_acceleration, input.axes[a].peak_acceleration * (1 + 1e-9))
+        << a;
+    EXPECT_LE(held.after.axes[a].peak_jerk, input.axes[a].peak_jerk * (1 + 1e-9)) << a;
+  }
+  EXPECT_GT(free.after.axes[kA].peak_acceleration, 2 * input.axes[kA].peak_acceleration);
+  EXPECT_GT(held.report.moves_raised, 20);
+  EXPECT_LT(held.after.machining_time_s, 0.8 * input.machining_time_s);
+  EXPECT_LT(free.after.machining_time_s, held.after.machining_time_s);
+}
+
+TEST(FeedSchedulerTest, RaisedFeedsStopAtWhatThePlannerCanReach) {
+  // 0.2 mm moves at 60 mm/min, factor 100: a planner blending at half of
+  // X's 300 mm/s^2 reaches sqrt(150 * 0.2) mm/s on each (model/planner_time.h).
+  Machine machine;
+  machine.limits[kX].max_acceleration = 300.0;
+  std::vector<double> ends, times;
+  for (int k = 1; k <= 30; ++k) {
+    ends.push_back(0.2 * k);
+    times.push_back(0.2);
+  }
+  const Scheduled s = ScheduleLine(machine, TimedLineAlongX(ends, times), Raise(100.0, 1e6));
+  for (size_t i = 1; i < s.path.poses.size(); ++i) {
+    EXPECT_NEAR(s.path.poses[i].feed_mm_per_min, 60.0 * std::sqrt(30.0), 1e-9) << i;
+  }
+}
+
+FeedScheduleOptions KeepRunTime(double window_mm) {
+  FeedScheduleOptions o;
+  o.mode = FeedMode::kKeepRunTime;
+  o.keep_run_time_window_mm = window_mm;
+  return o;
+}
+
+TEST(FeedSchedulerTest, KeepRunTimeGivesEachRunOneSpeedThatKeepsItsTime) {
+  // Moves of 1 and 0.25 mm in turn, each 0.4 s (a G93 program's fixed
+  // time), then a rapid and a second run of 0.5 mm moves of 0.1 s: with an
+  // unbounded window each run moves at its own length / time.
+  std::vector<double> ends, times;
+  double x = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    x += k % 2 == 0 ? 1.0 : 0.25;
+    ends.push_back(x);
+    times.push_back(0.4);
+  }
+  ToolPath path = TimedLineAlongX(ends, times);
+  const double first_mm = x, first_s = 20 * 0.4;
+  ToolPose rapid = path.poses.back();
+  rapid.p_w_tip.z() = 5.0;
+  rapid.rapid = true;
+  path.poses.push_back(rapid);
+  for (int k = 1; k <= 10; ++k) {
+    ToolPose p = rapid;
+    p.rapid = false;
+    p.p_w_tip.x() += 0.5 * k;
+    p.feed_mm_per_min = 60.0 * 0.5 / 0.1;
+    path.poses.push_back(p);
+  }
+  const Machine machine;
+  const Scheduled s = ScheduleLine(machine, path, KeepRunTime(INFINITY));
+  EXPECT_EQ(s.report.runs_retimed, 2);
+  for (size_t i = 1; i <= 20; ++i) {
+    EXPECT_NEAR(s.path.poses[i].feed_mm_per_min, 60.0 * first_mm / first_s, 1e-9) << i;
+  }
+  for (size_t i = 22; i < s.path.poses.size(); ++i) {
+    EXPECT_NEAR(s.path.poses[i].feed_mm_per_min, 60.0 * 5.0, 1e-9) << i;
+  }
+  EXPECT_NEAR(s.after.machining_time_s, s.before.machining_time_s, 1e-9);
+  EXPECT_NEAR(PathTime(machine, s.path), PathTime(machine, path), 1e-9);
+}
+
+TEST(FeedSchedulerTest, KeepRunTimeFollowsTheProgramsMeanSpeedOverTheWindow) {
+  // 20 moves of 1 mm at 0.5 s, then 20 at 0.25 s: with a 4 mm window a move
+  // more than 2 mm from the change sees only its own half's mean speed, so
+  // the second half runs exactly twice as fast as the first, and the run
+  // takes its 15 s.
+  std::vector<double> ends, times;
+  for (int k = 1; k <= 40; ++k) {
+    ends.push_back(k);
+    times.push_back(k <= 20 ? 0.5 : 0.25);
+  }
+  const Machine machine;
+  const Scheduled s = ScheduleLine(machine, TimedLineAlongX(ends, times), KeepRunTime(4.0));
+  const double slow = s.path.poses[1].feed_mm_per_min;
+  for (size_t i = 1; i <= 18; ++i) EXPECT_NEAR(s.path.poses[i].feed_mm_per_min, slow, 1e-9) << i;
+  for (size_t i = 23; i <= 40; ++i) {
+    EXPECT_NEAR(s.path.poses[i].feed_mm_per_min, 2 * slow, 1e-9) << i;
+  }
+  for (size_t i = 19; i <= 22; ++i) {  // the change is spread over the window
+    EXPECT_GT(s.path.poses[i].feed_mm_per_min, slow) << i;
+    EXPECT_LT(s.path.poses[i].feed_mm_per_min, 2 * slow) << i;
+  }
+  EXPECT_NEAR(s.after.machining_time_s, 15.0, 1e-9);
+}
+
+TEST(FeedSchedulerTest, KeepRunTimeStillKeepsTheLimits) {
+  // The same run with X's velocity limit below its new speed: the limit
+  // wins, as in the default mode.
+  std::vector<double> ends, times;
+  for (int k = 1; k <= 20; ++k) {
+    ends.push_back(k % 2 == 0 ? k * 0.5 : k * 0.5);
+    times.push_back(k % 4 == 0 ? 0.1 : 0.3);
+  }
+  Machine machine;
+  machine.limits[kX].max_velocity = 2.0;  // mm/s; the run's mean is 2.27
+  const Scheduled s = ScheduleLine(machine, TimedLineAlongX(ends, times), KeepRunTime(INFINITY));
+  EXPECT_EQ(s.after.limit_violations, 0);
+  EXPECT_GT(s.report.moves_slowed, 0);
+  for (size_t i = 1; i < s.path.poses.size(); ++i) {
+    EXPECT_LE(s.path.poses[i].feed_mm_per_min, 120.0) << i;
+  }
+}
+
 TEST(FeedSchedulerTest, RejectsBadOptions) {
   FeedScheduleOptions o;
   std::string why;
@@ -181,6 +363,10 @@ TEST(FeedSchedulerTest, RejectsBadOptions) {
   o.max_feed_mm_per_min = 0;
   EXPECT_FALSE(o.IsValid(&why));
   EXPECT_NE(why.find("max feed 0"), std::string::npos);
+  o = FeedScheduleOptions();
+  o.keep_run_time_window_mm = 0;
+  EXPECT_FALSE(o.IsValid(&why));
+  EXPECT_NE(why.find("window 0"), std::string::npos);
 }
 
 }  // namespace

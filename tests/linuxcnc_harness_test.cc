@@ -106,7 +106,7 @@ TEST(LinuxCncHarnessTest, SmoothedProgramRunsAndMovesTheRotariesMoreGently) {
   ASSERT_EQ(evaluate.exit_code, 0) << evaluate.output;
   const nlohmann::json controller = ReadJson(report)["controller"];
   EXPECT_EQ(controller["cycle_time_s"], summary[1]["cycle_time_s"]);
-  EXPECT_EQ(controller["predicted_time_s"], ReadJson(report)["machining_time_s"]);
+  EXPECT_EQ(controller["predicted_time_s"], ReadJson(report)["planner_time_s"]);
   std::printf("smoothed: tpopt predicted %.3f s\n", controller["predicted_time_s"].get<double>());
   EXPECT_NE(testing::ReadFileText(html).find("On LinuxCNC's controller"), std::string::npos);
   // At the program's own feeds the cycle time stays.

@@ -3,17 +3,19 @@
 each: compare.py LABEL=summary.json[,tpopt_report.json] ...
 
 With a tpopt report (tpopt smooth/evaluate --report), the column also shows
-tpopt's predicted machining time of the program it wrote (or read).
+tpopt's predicted time of the program it wrote (or read): on the planner
+(planner_time_s, model/planner_time.h) and at the feeds alone
+(machining_time_s).
 Exit 1 when a run did not complete."""
 import json
 import sys
 
 
-def predicted_time(report):
-    for key in ("output", "input"):
-        if isinstance(report.get(key), dict) and "machining_time_s" in report[key]:
-            return report[key]["machining_time_s"]
-    return report.get("machining_time_s")
+def predicted_time(report, key):
+    for side in ("output", "input"):
+        if isinstance(report.get(side), dict) and key in report[side]:
+            return report[side][key]
+    return report.get(key)
 
 
 def rows_of(summary, report):
@@ -25,7 +27,10 @@ def rows_of(summary, report):
     rows = [("completed", "yes" if summary.get("completed") else "NO: " + summary.get("error", "")),
             ("cycle time, s", summary.get("cycle_time_s"))]
     if report is not None:
-        rows.append(("tpopt predicted time, s", predicted_time(report)))
+        rows.append(("tpopt predicted time on the planner, s",
+                     predicted_time(report, "planner_time_s")))
+        rows.append(("tpopt predicted time at the feeds, s",
+                     predicted_time(report, "machining_time_s")))
     rows.append(("stops in cuts", summary.get("stops_in_cuts")))
     for quantity, unit in (("acceleration", "deg/s^2"), ("jerk", "deg/s^3")):
         for axis in ("A", "C"):
