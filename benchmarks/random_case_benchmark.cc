@@ -5,7 +5,13 @@
 // also writes one row per case and configuration.
 //
 //   ./build/benchmarks/random_case_benchmark [--cases=200] [--first_seed=1]
-//       [--poses=40] [--out=random_cases.csv]
+//       [--poses=40] [--out=random_cases.csv] [--seeds=3,17,29]
+//       [--mode=spline|high_accuracy] [--interpolation=tcp|joint]
+//
+// --seeds runs the listed seeds instead of --cases from --first_seed;
+// --mode and --interpolation run only the configurations that match (for
+// diagnosing single cases). With --seeds every refusal also prints the
+// case's description and the input's and initial guess's max |dev|.
 //
 // Deviation is that of the pipeline's own report (the fast exact evaluator
 // on the input's covered range, under the configuration's interpolation
@@ -61,7 +67,7 @@ double Ratio(double value, double reference) {
 }
 
 Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
-            const PathMetrics& spo) {
+            const PathMetrics& spo, bool detail) {
   SmoothingSettings settings;
   settings.mode = config.mode;
   settings.deviation.interpolation = config.interpolation;
@@ -80,6 +86,15 @@ Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
   if (!s.ok()) {
     row.outcome = failure == SmoothingFailure::kSolver ? "refused" : "failed";
     row.message = s.message();
+    if (detail) {
+      char numbers[200];
+      std::snprintf(numbers, sizeof(numbers),
+                    " [max|dev| input %.4g, guess %.4g, output %.4g, clean DPO %.4g mm] ",
+                    WorstDeviationMm(result.input_metrics),
+                    WorstDeviationMm(result.initial_guess_metrics),
+                    WorstDeviationMm(result.output_at_input_feed), WorstDeviationMm(dpo));
+      row.message += numbers + c.description;
+    }
     return row;
   }
   row.outcome = "ok";
@@ -100,7 +115,8 @@ std::string CsvField(std::string text) {
 int Main(int argc, char** argv) {
   int cases = 200, poses = 40;
   unsigned first_seed = 1;
-  std::string csv_path;
+  std::string csv_path, only_mode, only_interpolation;
+  std::vector<unsigned> seeds;
   for (int i = 1; i < argc; ++i) {
     const char* arg = argv[i];
     if (std::strncmp(arg, "--cases=", 8) == 0) {
@@ -111,9 +127,19 @@ int Main(int argc, char** argv) {
       first_seed = static_cast<unsigned>(std::strtoul(arg + 13, nullptr, 10));
     } else if (std::strncmp(arg, "--out=", 6) == 0) {
       csv_path = arg + 6;
+    } else if (std::strncmp(arg, "--seeds=", 8) == 0) {
+      std::istringstream list(arg + 8);
+      for (std::string item; std::getline(list, item, ',');) {
+        seeds.push_back(static_cast<unsigned>(std::strtoul(item.c_str(), nullptr, 10)));
+      }
+    } else if (std::strncmp(arg, "--mode=", 7) == 0) {
+      only_mode = arg + 7;
+    } else if (std::strncmp(arg, "--interpolation=", 16) == 0) {
+      only_interpolation = arg + 16;
     } else {
       std::fprintf(stderr,
-                   "usage: %s [--cases=200] [--first_seed=1] [--poses=40] [--out=FILE.csv]\n",
+                   "usage: %s [--cases=200] [--first_seed=1] [--poses=40] [--out=FILE.csv] "
+                   "[--seeds=a,b,c] [--mode=spline|high_accuracy] [--interpolation=tcp|joint]\n",
                    argv[0]);
       return 2;
     }
@@ -133,18 +159,35 @@ int Main(int argc, char** argv) {
     std::fprintf(stderr, "bad options: %s (cases %d)\n", why.c_str(), cases);
     return 2;
   }
-  const Config configs[] = {{SmoothingMode::kSpline, Interpolation::kTcp},
-                            {SmoothingMode::kSpline, Interpolation::kJoint},
-                            {SmoothingMode::kHighAccuracy, Interpolation::kTcp},
-                            {SmoothingMode::kHighAccuracy, Interpolation::kJoint}};
+  std::vector<Config> configs;
+  for (const Config& config : {Config{SmoothingMode::kSpline, Interpolation::kTcp},
+                               Config{SmoothingMode::kSpline, Interpolation::kJoint},
+                               Config{SmoothingMode::kHighAccuracy, Interpolation::kTcp},
+                               Config{SmoothingMode::kHighAccuracy, Interpolation::kJoint}}) {
+    if ((only_mode.empty() || only_mode == config.ModeName()) &&
+        (only_interpolation.empty() ||
+         only_interpolation == InterpolationName(config.interpolation))) {
+      configs.push_back(config);
+    }
+  }
+  if (configs.empty()) {
+    std::fprintf(stderr, "no configuration matches --mode=%s --interpolation=%s\n",
+                 only_mode.c_str(), only_interpolation.c_str());
+    return 2;
+  }
+  const bool detail = !seeds.empty();
+  if (seeds.empty()) {
+    for (int k = 0; k < cases; ++k) seeds.push_back(first_seed + static_cast<unsigned>(k));
+  }
+  cases = static_cast<int>(seeds.size());
   std::vector<Row> rows;
   int not_fitting = 0;
   const auto start = std::chrono::steady_clock::now();
-  for (int k = 0; k < cases; ++k) {
+  for (const unsigned seed : seeds) {
     RandomCase c;
-    const Status s = MakeRandomCase(first_seed + static_cast<unsigned>(k), options, machines, &c);
+    const Status s = MakeRandomCase(seed, options, machines, &c);
     if (!s.ok()) {
-      std::fprintf(stderr, "seed %u: %s\n", first_seed + k, s.message().c_str());
+      std::fprintf(stderr, "seed %u: %s\n", seed, s.message().c_str());
       return 1;
     }
     if (!c.fits_machine) {
@@ -175,7 +218,8 @@ int Main(int argc, char** argv) {
       }
     }
     for (const Config& config : configs) {
-      rows.push_back(RunCase(c, config, dpo[static_cast<int>(config.interpolation)], spo));
+      rows.push_back(RunCase(c, config, dpo[static_cast<int>(config.interpolation)], spo,
+                             detail));
       if (rows.back().outcome != "ok") {
         std::fprintf(stderr, "\nseed %u %s %s %s: %s\n", c.seed, config.ModeName(),
                      InterpolationName(config.interpolation), rows.back().outcome.c_str(),
@@ -190,7 +234,8 @@ int Main(int argc, char** argv) {
 
   std::printf("%d random cases (seeds %u-%u, %d CAM poses each), %d do not fit their machine; "
               "%.0f s in all\n\n",
-              cases, first_seed, first_seed + cases - 1, poses, not_fitting, total_s);
+              cases, *std::min_element(seeds.begin(), seeds.end()),
+              *std::max_element(seeds.begin(), seeds.end()), poses, not_fitting, total_s);
   std::printf("| mode | interpolation | run | refused | failed | max\\|dev\\|/DPO median / p95 / "
               "worst | <= 0.7 | <= 1.0 | d2A/SPO median / p95 / worst | d2C/SPO median / p95 / "
               "worst | time s median / p95 / worst |\n");

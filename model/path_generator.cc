@@ -68,6 +68,51 @@ double UvDistortion(const FlankPathOptions& o, double u) {
   return o.uv_distortion * c * c;
 }
 
+Status FlankPoseAt(const RuledSurface& surface, const FlankPathOptions& o, double u,
+                   ToolPose* pose_out, double* ruling_mm) {
+  CHECK(pose_out != nullptr);
+  const double r = o.cutter_radius_mm;
+  const double u2 = std::clamp(u + UvDistortion(o, u), 0.0, 1.0);
+  const auto c1 = surface.rail(0).Evaluate(u, 1);
+  const auto c2 = surface.rail(1).Evaluate(u2, 1);
+  const Eigen::Vector3d ruling = c2[0] - c1[0];
+  if (ruling_mm != nullptr) *ruling_mm = ruling.norm();
+  Eigen::Vector3d n1, n2;
+  // The CAM's normals come from its own (possibly distorted) pairing.
+  if (!RulingNormal(surface, c1[1], ruling, &n1) || !RulingNormal(surface, c2[1], ruling, &n2)) {
+    std::ostringstream err;
+    err << surface.name() << ": the surface normal vanishes at u = " << u;
+    return Status::Error(err.str());
+  }
+  ToolPose pose;
+  pose.feed_mm_per_min = o.feed_mm_per_min;
+  pose.p_w_tip = c1[0] + r * n1;
+  const double taper = o.taper_rad;
+  if (o.strategy == FlankStrategy::kSinglePointOffset) {
+    const Eigen::Vector3d e = ruling.normalized();
+    // n1 is normal to e, so the cone's generator a - tan(taper) n_perp,
+    // n_perp = cos(taper) n1 - sin(taper) e, is parallel to e.
+    pose.a_w = std::cos(taper) * e + std::sin(taper) * n1;
+    pose.p_w_tip = c1[0] + r * (std::cos(taper) * n1 - std::sin(taper) * e);
+  } else {
+    pose.a_w = (c2[0] + r * n2 - pose.p_w_tip).normalized();
+    // A cone: C1 at the tip's radius and C2 at the radius of its own
+    // height, both along the normals made orthogonal to the axis; a
+    // fixed point in the axis, which moves by O(taper^2) each round.
+    for (int round = 0; taper > 0 && round < 8; ++round) {
+      const Eigen::Vector3d a = pose.a_w;
+      const Eigen::Vector3d n1p = (n1 - n1.dot(a) * a).normalized();
+      const Eigen::Vector3d n2p = (n2 - n2.dot(a) * a).normalized();
+      pose.p_w_tip = c1[0] + r * n1p;
+      const double height = (c2[0] - pose.p_w_tip).dot(a);
+      const Eigen::Vector3d top = c2[0] + (r + height * std::tan(taper)) * n2p;
+      pose.a_w = (top - pose.p_w_tip).normalized();
+    }
+  }
+  *pose_out = pose;
+  return Status::Ok();
+}
+
 Status GenerateFlankPath(const RuledSurface& surface, const FlankPathOptions& o,
                          ToolPath* path) {
   CHECK(path != nullptr);
@@ -79,43 +124,11 @@ Status GenerateFlankPath(const RuledSurface& surface, const FlankPathOptions& o,
   double longest_ruling_mm = 0.0;
   for (int i = 0; i < o.poses; ++i) {
     const double u = static_cast<double>(i) / (o.poses - 1);
-    const double u2 = std::clamp(u + UvDistortion(o, u), 0.0, 1.0);
-    const auto c1 = surface.rail(0).Evaluate(u, 1);
-    const auto c2 = surface.rail(1).Evaluate(u2, 1);
-    const Eigen::Vector3d ruling = c2[0] - c1[0];
-    longest_ruling_mm = std::max(longest_ruling_mm, ruling.norm());
-    Eigen::Vector3d n1, n2;
-    // The CAM's normals come from its own (possibly distorted) pairing.
-    if (!RulingNormal(surface, c1[1], ruling, &n1) || !RulingNormal(surface, c2[1], ruling, &n2)) {
-      std::ostringstream err;
-      err << surface.name() << ": the surface normal vanishes at u = " << u;
-      return Status::Error(err.str());
-    }
     ToolPose pose;
-    pose.feed_mm_per_min = o.feed_mm_per_min;
-    pose.p_w_tip = c1[0] + r * n1;
-    const double taper = o.taper_rad;
-    if (o.strategy == FlankStrategy::kSinglePointOffset) {
-      const Eigen::Vector3d e = ruling.normalized();
-      // n1 is normal to e, so the cone's generator a - tan(taper) n_perp,
-      // n_perp = cos(taper) n1 - sin(taper) e, is parallel to e.
-      pose.a_w = std::cos(taper) * e + std::sin(taper) * n1;
-      pose.p_w_tip = c1[0] + r * (std::cos(taper) * n1 - std::sin(taper) * e);
-    } else {
-      pose.a_w = (c2[0] + r * n2 - pose.p_w_tip).normalized();
-      // A cone: C1 at the tip's radius and C2 at the radius of its own
-      // height, both along the normals made orthogonal to the axis; a
-      // fixed point in the axis, which moves by O(taper^2) each round.
-      for (int round = 0; taper > 0 && round < 8; ++round) {
-        const Eigen::Vector3d a = pose.a_w;
-        const Eigen::Vector3d n1p = (n1 - n1.dot(a) * a).normalized();
-        const Eigen::Vector3d n2p = (n2 - n2.dot(a) * a).normalized();
-        pose.p_w_tip = c1[0] + r * n1p;
-        const double height = (c2[0] - pose.p_w_tip).dot(a);
-        const Eigen::Vector3d top = c2[0] + (r + height * std::tan(taper)) * n2p;
-        pose.a_w = (top - pose.p_w_tip).normalized();
-      }
-    }
+    double ruling_mm = 0.0;
+    const Status s = FlankPoseAt(surface, o, u, &pose, &ruling_mm);
+    if (!s.ok()) return s;
+    longest_ruling_mm = std::max(longest_ruling_mm, ruling_mm);
     if (o.axis_noise_deg > 0) pose.a_w = Perturb(pose.a_w, o.axis_noise_deg * M_PI / 180, &rng);
     out.poses.push_back(pose);
   }

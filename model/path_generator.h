@@ -58,6 +58,14 @@ struct FlankPathOptions {
 // and zero at the bump's edges.
 double UvDistortion(const FlankPathOptions& options, double u);
 
+// The clean pose of `options`' strategy at contact ruling u in [0, 1] (no
+// axis noise; the U/V mismatch if options.uv_distortion is set), with the
+// tip at C1(u) + R n as above; `ruling_mm` (may be null) gets the length of
+// the ruling paired with C1(u). Options must be valid. Fails naming u where
+// the surface normal vanishes.
+Status FlankPoseAt(const RuledSurface& surface, const FlankPathOptions& options, double u,
+                   ToolPose* pose, double* ruling_mm = nullptr);
+
 // Fails naming the value for bad options and naming u where the surface
 // normal vanishes.
 Status GenerateFlankPath(const RuledSurface& surface, const FlankPathOptions& options,

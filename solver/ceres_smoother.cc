@@ -149,8 +149,8 @@ void AddLimitFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, dou
 void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
                         double length_mm, const std::vector<bool>& free_pose,
                         SmoothingState* state, ceres::Problem* problem) {
-  DeviationCost::Settings settings{*in.cutter, in.machine->kinematics, o.tolerance_mm,
-                                   o.overcut_factor, o.interpolation};
+  DeviationCost::Settings settings{*in.cutter,       in.machine->kinematics, o.tolerance_mm,
+                                   o.overcut_factor, o.interpolation,        0.0};
   const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
   const int m = o.ruling_samples;
@@ -187,6 +187,8 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
   }
 }
 
+constexpr double kToleranceTargetFraction = 0.8;
+
 // The active set of points held to the tolerance: each on every move of
 // the path whose two contact rulings bracket its u, at the matching
 // fraction of the move.
@@ -194,8 +196,12 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
                         const std::vector<bool>& free_pose, SmoothingState* state,
                         ceres::Problem* problem) {
   if (in.surface == nullptr || in.tolerance_points == nullptr) return;
-  DeviationCost::Settings settings{*in.cutter, in.machine->kinematics, o.tolerance_mm,
-                                   o.overcut_factor, o.interpolation};
+  // Only a point's excess over kToleranceTargetFraction of the tolerance
+  // counts (the margin covers the gap between this point on the move and
+  // the judge's exact envelope).
+  DeviationCost::Settings settings{*in.cutter,       in.machine->kinematics, o.tolerance_mm,
+                                   o.overcut_factor, o.interpolation,
+                                   kToleranceTargetFraction * o.tolerance_mm};
   const ToolPath& path = *in.input;
   for (const TolerancePoint& point : *in.tolerance_points) {
     const Eigen::Vector3d q_w = in.surface->Point(point.u, point.v);

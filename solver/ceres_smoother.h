@@ -138,9 +138,10 @@ struct HighAccuracyOptions {
 // active set of grid points where a solve left the surface farther from the
 // cutter than the tolerance (solver/smoothing_pipeline.cc). Its residual is
 // the deviation family's at that one point, on the move whose contact
-// rulings bracket u, with weight w_deviation * weight: at one tolerance of
-// deviation it costs what the whole path does at one tolerance, times
-// weight (dimensionless).
+// rulings bracket u, with weight w_deviation * weight, and a dead band of
+// 0.8 tolerance (deviation_cost.h): only its excess over that counts, and
+// at one tolerance of excess it costs what the whole path does at one
+// tolerance, times weight (dimensionless).
 struct TolerancePoint {
   double u = 0.0, v = 0.0;  // surface parameters
   double weight = 1.0;

@@ -20,6 +20,12 @@
 // point's own pose measures its undercut) but not inside it:
 //   r_g = sqrt(w h / (L n)) * min(d_g, 0) / tol * overcut_factor.
 //
+// With a dead band b > 0 a contact point costs only its excess over b,
+//   r_k = sqrt(w h / (L n)) * sign(d_k) max(|d_k| - b, 0) / tol * (...),
+// the exact penalty of a constraint |d_k| <= b: the points held to the
+// tolerance (solver/smoothing_pipeline.cc) are pushed inside it, not to
+// zero, so that holding them does not pull the rest of the path off.
+//
 // Between poses the pose at fraction lambda of the move i -> i+1 is the
 // controller's (model/interpolation.h): joint, J = (1 - lambda) J_i +
 // lambda J_i+1 mapped back to W by the kinematics, or TCP, the tip linear
@@ -48,6 +54,8 @@ class DeviationCost {
     double tolerance_mm = 0.01;
     double overcut_factor = 3.0;
     Interpolation interpolation = Interpolation::kJoint;
+    // Contact deviation within +-dead_band_mm costs nothing, mm; >= 0.
+    double dead_band_mm = 0.0;
   };
 
   // The sample points in W: contact points (on the pose's own ruling) and
@@ -100,7 +108,9 @@ class DeviationCost {
                  T* r) const {
     const double unit = scale_ / settings_.tolerance_mm;
     for (const Eigen::Vector3d& q : points_.contact_w) {
-      const T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis);
+      T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis);
+      const double band = settings_.dead_band_mm;
+      if (band > 0.0) d = d > T(band) ? d - T(band) : d < T(-band) ? d + T(band) : T(0.0);
       *r++ = T(unit * (d < T(0.0) ? settings_.overcut_factor : 1.0)) * d;
     }
     // Most guard points lie outside the cutter, where the residual and its

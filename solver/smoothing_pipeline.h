@@ -1,10 +1,12 @@
 // The whole smoothing job, shared by `tpopt smooth` and the quality
 // benchmark: metrics of the input; the spline method (the output in spline
-// mode, the initial guess in high-accuracy mode with a surface; without one
-// the input itself starts the solve); the Ceres solve; resampling; the
-// refusal of a result worse than its start or (with a surface) beyond the
-// tolerance, after tightening the solve; feed scheduling; metrics of the
-// output.
+// mode; in high-accuracy mode with a surface the initial guess is the spline
+// path or the poses placed on the surface, whichever is nearer it; without
+// one the input itself starts the solve); the Ceres solve; resampling; the
+// refusal of a result that (with a surface) leaves points beyond the
+// tolerance after tightening the solve, or breaks more axis limits than its
+// start and the input (without one: is worse than its start); feed
+// scheduling; metrics of the output.
 #ifndef TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
 #define TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
 
@@ -67,6 +69,10 @@ struct SmoothingResult {
   ToolPath output;
   PathMetrics input_metrics;
   PathMetrics initial_guess_metrics;  // high-accuracy mode only
+  // High accuracy with a surface: the solve started from the poses placed
+  // on the surface (solver/surface_placement.h), which the judge found
+  // nearer the surface than the spline path; false: from the spline path.
+  bool start_placed_on_surface = false;
   PathMetrics output_at_input_feed;   // before feed scheduling
   PathMetrics output_metrics;         // as written
   // High accuracy: the tolerance unit of the solve, mm.

@@ -37,6 +37,31 @@ TEST(DeviationCostTest, ResidualIsTheFlankDistanceInTolerances) {
   EXPECT_NEAR(r[3], -30.0, 1e-9);
 }
 
+TEST(DeviationCostTest, ADeadBandCostsOnlyTheExcessOverIt) {
+  // Vertical tool at the origin, band 0.008 mm: undercut 0.02 -> 0.012 mm
+  // of excess (1.2 tolerances); overcut 0.01 -> 0.002 (x3: -0.6); 0.005
+  // either way is inside the band and costs nothing.
+  DeviationCost::Settings settings = Settings();
+  settings.dead_band_mm = 0.008;
+  DeviationCost::Points points;
+  points.contact_w = {{4.02, 0, 5}, {0, -3.99, 12}, {4.005, 0, 7}, {0, 3.995, 9}};
+  std::unique_ptr<ceres::CostFunction> cost(
+      DeviationCost::CreateAtPose(points, settings, /*scale=*/1.0));
+  std::array<double, 5> pose = {0, 0, 0, 0, 0};
+  const double* params[] = {pose.data()};
+  double r[4];
+  ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[0], 1.2, 1e-9);
+  EXPECT_NEAR(r[1], -0.6, 1e-9);
+  EXPECT_EQ(r[2], 0.0);
+  EXPECT_EQ(r[3], 0.0);
+  // Outside the band the Jacobian is the plain residual's.
+  DeviationCost::Points outside;
+  outside.contact_w = {{4.02, 0, 5}};
+  testing::ExpectJacobiansMatchNumeric(DeviationCost::CreateAtPose(outside, settings, 1.0),
+                                       {pose.data()});
+}
+
 TEST(DeviationCostTest, MidMoveUsesJointSpaceInterpolation) {
   // Two poses with the same tip and C turned by 90 deg. The controller
   // moves X, Y, Z, A, C linearly, so mid-move the tip in W is not the
