@@ -266,17 +266,18 @@ bool IgesDelimiters(const std::string& global, char* param_delim,
 Status CheckIgesBSpline(const std::string& name, bool surface,
                         const std::vector<std::string>& params) {
   const std::vector<std::string> labels =
-      surface ? std::vector<std::string>{"K1", "K2", "M1", "M2", "PROP1",
-                                         "PROP2", "PROP3", "PROP4", "PROP5"}
-              : std::vector<std::string>{"K", "M", "PROP1", "PROP2", "PROP3",
-                                         "PROP4"};
+      surface
+          ? std::vector<std::string>{"K1",    "K2",    "M1",    "M2",   "PROP1",
+                                     "PROP2", "PROP3", "PROP4", "PROP5"}
+          : std::vector<std::string>{"K",     "M",     "PROP1",
+                                     "PROP2", "PROP3", "PROP4"};
   const long long present = static_cast<long long>(params.size());
   std::vector<long long> n(labels.size());
   for (size_t i = 0; i < labels.size(); ++i) {
     if (i + 1 >= params.size()) {
       return Status::Error(name + ": its parameter data end after " +
-                           std::to_string(present - 1) + " parameters, before " +
-                           labels[i]);
+                           std::to_string(present - 1) +
+                           " parameters, before " + labels[i]);
     }
     if (!IgesInteger(params[i + 1], &n[i])) {
       return Status::Error(name + ": " + labels[i] + " '" + params[i + 1] +
@@ -301,16 +302,15 @@ Status CheckIgesBSpline(const std::string& name, bool surface,
   }
   long long need = 1 + static_cast<long long>(labels.size());
   if (surface) {
-    need += (n[0] + n[2] + 2) + (n[1] + n[3] + 2) +
-            4 * (n[0] + 1) * (n[1] + 1) + 4;
+    need +=
+        (n[0] + n[2] + 2) + (n[1] + n[3] + 2) + 4 * (n[0] + 1) * (n[1] + 1) + 4;
   } else {
     need += (n[0] + n[1] + 2) + 4 * (n[0] + 1) + 2;
   }
   if (present < need) {
-    return Status::Error(name + ": " + counts.str() + " need " +
-                         std::to_string(need - 1) +
-                         " parameters, its parameter data hold " +
-                         std::to_string(present - 1));
+    return Status::Error(
+        name + ": " + counts.str() + " need " + std::to_string(need - 1) +
+        " parameters, its parameter data hold " + std::to_string(present - 1));
   }
   for (long long i = static_cast<long long>(labels.size()) + 1; i < need; ++i) {
     if (!IgesReal(params[i])) {
@@ -343,8 +343,7 @@ Status CheckIgesLayout(const std::string& path, const std::string& text) {
     const char letter = line[72];
     const char* found = std::strchr(kIgesSections, letter);
     if (letter == '\0' || found == nullptr) {
-      return Status::Error(where + ": column 73 is '" +
-                           std::string(1, letter) +
+      return Status::Error(where + ": column 73 is '" + std::string(1, letter) +
                            "', not S, G, D, P or T (a section letter)");
     }
     const int k = static_cast<int>(found - kIgesSections);
@@ -374,8 +373,7 @@ Status CheckIgesLayout(const std::string& path, const std::string& text) {
   for (int k = 0; k < 4; ++k) {
     const std::string field = sections[4][0].substr(8 * k, 8);
     long long count = -1;
-    if (field[0] != kIgesSections[k] ||
-        !IgesInteger(field.substr(1), &count) ||
+    if (field[0] != kIgesSections[k] || !IgesInteger(field.substr(1), &count) ||
         count != static_cast<long long>(sections[k].size())) {
       return Status::Error(path + ": the Terminate record's field '" + field +
                            "' does not count the " +
@@ -395,8 +393,7 @@ Status CheckIgesLayout(const std::string& path, const std::string& text) {
   std::vector<std::string> params;
   std::string why;
   if (!IgesDelimiters(global_text, &param_delim, &record_delim) ||
-      !SplitIgesRecord(global_text, param_delim, record_delim, &params,
-                       &why)) {
+      !SplitIgesRecord(global_text, param_delim, record_delim, &params, &why)) {
     return Status::Error(path + ": line " + std::to_string(first_line[1]) +
                          ": the Global section is not a record" +
                          (why.empty() ? "" : ": " + why));
@@ -407,8 +404,8 @@ Status CheckIgesLayout(const std::string& path, const std::string& text) {
     const int de = static_cast<int>(e) + 1;
     long long type = 0, type2 = 0, pointer = 0, count = 0;
     const std::string where = path + ": directory entry " + std::to_string(de) +
-                              " (line " +
-                              std::to_string(first_line[2] + e) + ")";
+                              " (line " + std::to_string(first_line[2] + e) +
+                              ")";
     if (!IgesInteger(a.substr(0, 8), &type) ||
         !IgesInteger(b.substr(0, 8), &type2) || type != type2) {
       return Status::Error(where + ": entity type '" + Trim(a.substr(0, 8)) +
@@ -423,12 +420,12 @@ Status CheckIgesLayout(const std::string& path, const std::string& text) {
                            Trim(b.substr(24, 8)) + "' is not a number");
     }
     const long long nbp = static_cast<long long>(parameters.size());
-    if (pointer < 1 || count < 1 || pointer > nbp || count > nbp - pointer + 1) {
-      return Status::Error(name + ": its parameter data, " +
-                           std::to_string(count) + " lines from P line " +
-                           std::to_string(pointer) +
-                           ", do not lie in the P section (" +
-                           std::to_string(nbp) + " lines)");
+    if (pointer < 1 || count < 1 || pointer > nbp ||
+        count > nbp - pointer + 1) {
+      return Status::Error(
+          name + ": its parameter data, " + std::to_string(count) +
+          " lines from P line " + std::to_string(pointer) +
+          ", do not lie in the P section (" + std::to_string(nbp) + " lines)");
     }
     std::string data;
     for (long long p = pointer; p < pointer + count; ++p) {
@@ -436,8 +433,7 @@ Status CheckIgesLayout(const std::string& path, const std::string& text) {
       long long back = 0;
       if (!IgesInteger(record.substr(64, 8), &back) || back != de) {
         return Status::Error(name + ": P line " + std::to_string(p) +
-                             " (line " +
-                             std::to_string(first_line[3] + p - 1) +
+                             " (line " + std::to_string(first_line[3] + p - 1) +
                              ") points back to directory entry '" +
                              Trim(record.substr(64, 8)) + "'");
       }
