@@ -403,8 +403,7 @@ TEST_F(CadIoTest, BadFilesNameTheFile) {
 }
 
 // Each inconsistency the IGES pre-check finds, made by hand in a file OCCT
-// wrote: such files crashed OCCT 7.6's IGES parser (a B-spline whose counts
-// disagree with its parameters) or could (README, "Hostile files"). The
+// wrote (README, "Hostile files"). The
 // parameter counts are IGES 5.3's: a curve (126) has 6 + (K + M + 2) +
 // 4 (K + 1) + 2 parameters after its type and then an optional normal (3),
 // a surface (128) 9 + (K1 + M1 + 2) + (K2 + M2 + 2) + 4 (K1 + 1)(K2 + 1) + 4.
@@ -480,6 +479,19 @@ TEST_F(CadIoTest, InconsistentIgesFilesAreRefusedNamingTheEntity) {
   std::vector<std::string> narrow = lines;
   narrow[surface + 1].erase(64, 1);
   const Row rows[] = {
+      // A knot record of the surface or the curve that points back to no
+      // entity: OCCT 7.6 cuts the entity's parameters there, and Init of
+      // IGESGeom_BSplineSurface / IGESGeom_BSplineCurve crashed (SIGSEGV;
+      // all seven crashes of the mutation run in the README were such).
+      {"surface_back_pointer", with(surface + 1, 65, "00(0003"),
+       in_surface + "P line " + std::to_string(std::stoi(surface_p) + 1) +
+           " (line " + std::to_string(surface + 2) +
+           ") points back to directory entry '00(0003'"},
+      {"curve_back_pointer", with(curve + 1, 65, "00(0021"),
+       in_curve + "P line " +
+           std::to_string(std::stoi(lines[curve + 1].substr(73))) + " (line " +
+           std::to_string(curve + 2) +
+           ") points back to directory entry '00(0021'"},
       {"k_too_large", with(curve, 0, "126,9,3,"),
        in_curve + "K = 9, M = 3 need 62 parameters, its parameter data "
                   "hold 45"},
@@ -531,8 +543,8 @@ TEST_F(CadIoTest, InconsistentIgesFilesAreRefusedNamingTheEntity) {
   }
   // The run refuses them as bad input (exit 1), naming the entity.
   for (const std::string name :
-       {"k_too_large", "m_too_large", "truncated_p_section",
-        "pointer_past_the_end"}) {
+       {"surface_back_pointer", "curve_back_pointer", "k_too_large",
+        "m_too_large", "truncated_p_section", "pointer_past_the_end"}) {
     const auto r = RunCommand(
         Tpopt("generate --quiet --cutter_radius=4 --poses=20 --surface=" +
               dir_.File(name + ".igs") + " --out=" + dir_.File("p.cls")));
