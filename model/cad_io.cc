@@ -703,6 +703,19 @@ Status LoadChosenFace(const std::string& path, const CadReadOptions& options,
   return s;
 }
 
+// Under GuardOcct, reads the file and its chosen face and runs `body` on
+// them (the reads of ReadCadRuledSurface and ReadCadBSplineSurface).
+Status ReadChosenFace(
+    const std::string& path, const CadReadOptions& options,
+    const std::function<Status(const LoadedFile&, const ChosenFace&)>& body) {
+  return GuardOcct(path, [&]() {
+    LoadedFile loaded;
+    ChosenFace face;
+    const Status s = LoadChosenFace(path, options, &loaded, &face);
+    return s.ok() ? body(loaded, face) : s;
+  });
+}
+
 std::vector<double> FlatKnots(const Handle(Geom_BSplineSurface) & bs,
                               bool along_u) {
   const int n = along_u ? bs->NbUPoles() + bs->UDegree() + 1
@@ -1053,89 +1066,85 @@ Status ListCadFaces(const std::string& path,
 Status ReadCadRuledSurface(const std::string& path,
                            const CadReadOptions& options, RuledSurface* surface,
                            CadSurfaceInfo* info) {
-  return GuardOcct(path, [&]() {
-    LoadedFile loaded;
-    ChosenFace face;
-    Status s = LoadChosenFace(path, options, &loaded, &face);
-    if (!s.ok()) return s;
-    const std::string& what = face.what;
-    const Handle(Geom_BSplineSurface)& bs = face.bspline;
-    const std::string name =
-        Stem(path) + " face " + std::to_string(face.summary.index);
-    // The candidate rulings: the one asked for, else the exactly ruled
-    // direction (v first: a bilinear patch is ruled both ways), else both.
-    std::vector<bool> candidates;
-    if (!options.ruling.empty()) {
-      candidates = {options.ruling == "u"};
-    } else if (ExactlyRuled(bs, false)) {
-      candidates = {false};
-    } else if (ExactlyRuled(bs, true)) {
-      candidates = {true};
-    } else {
-      candidates = {false, true};
-    }
-    double best = std::numeric_limits<double>::infinity();
-    for (bool ruling_u : candidates) {
-      // N = r_u x r_v is S_u x S_v when the ruling is v, its opposite when u.
-      const double sign =
-          OutwardSign(face, options.flip_cutter_side) * (ruling_u ? -1.0 : 1.0);
-      RuledSurface ruled;
-      s = RailsOf(bs, ruling_u, what, name,
-                  sign > 0 ? CutterSide::kPositive : CutterSide::kNegative,
-                  &ruled);
-      if (!s.ok()) return s;
-      const bool exact = ExactlyRuled(bs, ruling_u);
-      const double deviation =
-          exact ? 0.0 : RuledDeviationMm(bs, ruling_u, ruled);
-      if (deviation < best) {
-        best = deviation;
-        *surface = ruled;
-        info->ruling = ruling_u ? "u" : "v";
-        info->exact_ruled = exact;
-        info->ruled_deviation_mm = deviation;
-      }
-    }
-    FillInfo(path, loaded, face, info);
-    if (best > options.max_ruled_deviation_mm) {
-      std::ostringstream err;
-      err << what << " is not ruled: it lies up to " << best
-          << " mm from the ruled surface between its boundary curves across "
-             "the ruling "
-          << info->ruling << ", above --max_ruled_deviation_mm="
-          << options.max_ruled_deviation_mm;
-      return Status::Error(err.str());
-    }
-    return Status::Ok();
-  });
+  return ReadChosenFace(
+      path, options, [&](const LoadedFile& loaded, const ChosenFace& face) {
+        const std::string& what = face.what;
+        const Handle(Geom_BSplineSurface)& bs = face.bspline;
+        const std::string name =
+            Stem(path) + " face " + std::to_string(face.summary.index);
+        // The candidate rulings: the one asked for, else the exactly ruled
+        // direction (v first: a bilinear patch is ruled both ways), else both.
+        std::vector<bool> candidates;
+        if (!options.ruling.empty()) {
+          candidates = {options.ruling == "u"};
+        } else if (ExactlyRuled(bs, false)) {
+          candidates = {false};
+        } else if (ExactlyRuled(bs, true)) {
+          candidates = {true};
+        } else {
+          candidates = {false, true};
+        }
+        double best = std::numeric_limits<double>::infinity();
+        for (bool ruling_u : candidates) {
+          // N = r_u x r_v is S_u x S_v when the ruling is v, its opposite when
+          // u.
+          const double sign = OutwardSign(face, options.flip_cutter_side) *
+                              (ruling_u ? -1.0 : 1.0);
+          RuledSurface ruled;
+          Status s = RailsOf(
+              bs, ruling_u, what, name,
+              sign > 0 ? CutterSide::kPositive : CutterSide::kNegative, &ruled);
+          if (!s.ok()) return s;
+          const bool exact = ExactlyRuled(bs, ruling_u);
+          const double deviation =
+              exact ? 0.0 : RuledDeviationMm(bs, ruling_u, ruled);
+          if (deviation < best) {
+            best = deviation;
+            *surface = ruled;
+            info->ruling = ruling_u ? "u" : "v";
+            info->exact_ruled = exact;
+            info->ruled_deviation_mm = deviation;
+          }
+        }
+        FillInfo(path, loaded, face, info);
+        if (best > options.max_ruled_deviation_mm) {
+          std::ostringstream err;
+          err << what << " is not ruled: it lies up to " << best
+              << " mm from the ruled surface between its boundary curves "
+                 "across "
+                 "the ruling "
+              << info->ruling << ", above --max_ruled_deviation_mm="
+              << options.max_ruled_deviation_mm;
+          return Status::Error(err.str());
+        }
+        return Status::Ok();
+      });
 }
 
 Status ReadCadBSplineSurface(const std::string& path,
                              const CadReadOptions& options,
                              BSplineSurface* surface, double* cutter_side_sign,
                              CadSurfaceInfo* info) {
-  return GuardOcct(path, [&]() {
-    LoadedFile loaded;
-    ChosenFace face;
-    Status s = LoadChosenFace(path, options, &loaded, &face);
-    if (!s.ok()) return s;
-    const std::string& what = face.what;
-    const Handle(Geom_BSplineSurface)& bs = face.bspline;
-    if (bs->UDegree() > BSplineSurface::kMaxDegree ||
-        bs->VDegree() > BSplineSurface::kMaxDegree) {
-      return Status::Error(what + ": degree " + std::to_string(bs->UDegree()) +
-                           " x " + std::to_string(bs->VDegree()) +
-                           " is above " +
-                           std::to_string(BSplineSurface::kMaxDegree));
-    }
-    s = BSplineSurface::Create(bs->UDegree(), bs->VDegree(),
-                               FlatKnots(bs, true), FlatKnots(bs, false),
-                               Net(bs, false), what, surface);
-    if (!s.ok()) return s;
-    *cutter_side_sign = OutwardSign(face, options.flip_cutter_side);
-    FillInfo(path, loaded, face, info);
-    info->ruling.clear();
-    return Status::Ok();
-  });
+  return ReadChosenFace(
+      path, options, [&](const LoadedFile& loaded, const ChosenFace& face) {
+        const std::string& what = face.what;
+        const Handle(Geom_BSplineSurface)& bs = face.bspline;
+        if (bs->UDegree() > BSplineSurface::kMaxDegree ||
+            bs->VDegree() > BSplineSurface::kMaxDegree) {
+          return Status::Error(what + ": degree " +
+                               std::to_string(bs->UDegree()) + " x " +
+                               std::to_string(bs->VDegree()) + " is above " +
+                               std::to_string(BSplineSurface::kMaxDegree));
+        }
+        Status s = BSplineSurface::Create(
+            bs->UDegree(), bs->VDegree(), FlatKnots(bs, true),
+            FlatKnots(bs, false), Net(bs, false), what, surface);
+        if (!s.ok()) return s;
+        *cutter_side_sign = OutwardSign(face, options.flip_cutter_side);
+        FillInfo(path, loaded, face, info);
+        info->ruling.clear();
+        return Status::Ok();
+      });
 }
 
 Status WriteCadPatches(const std::string& path,
