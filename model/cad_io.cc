@@ -147,6 +147,61 @@ Status CheckComplete(const std::string& path, const std::string& text) {
   return Status::Ok();
 }
 
+// ISO 10303-21 has no empty parameter (an omitted value is $), but OCCT
+// 7.6's STEP parser takes one between two lists, ", ,(", for an entity it
+// never made and crashed (README, "Hostile files"). Refuses an empty
+// parameter anywhere (",,", "(," or ",)"), outside strings and comments.
+Status CheckStepParameters(const std::string& path, const std::string& text) {
+  int line = 1;
+  char last = '\0';    // the last character outside blanks
+  std::string entity;  // the instance being read, e.g. "#31"
+  bool statement_start = true;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    if (std::isspace(static_cast<unsigned char>(c))) continue;
+    if (c == '\'') {  // a string; '' is a quote inside it
+      for (++i; i < text.size(); ++i) {
+        if (text[i] == '\n') ++line;
+        if (text[i] != '\'') continue;
+        if (i + 1 < text.size() && text[i + 1] == '\'') {
+          ++i;
+        } else {
+          break;
+        }
+      }
+      last = '\'';
+      statement_start = false;
+      continue;
+    }
+    if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+      const size_t end = text.find("*/", i + 2);
+      const size_t stop = end == std::string::npos ? text.size() : end + 1;
+      line += static_cast<int>(
+          std::count(text.begin() + i, text.begin() + stop, '\n'));
+      i = stop;
+      continue;
+    }
+    if (statement_start && c == '#') {
+      size_t j = i + 1;
+      while (j < text.size() &&
+             std::isdigit(static_cast<unsigned char>(text[j])))
+        ++j;
+      entity = text.substr(i, j - i);
+    }
+    if ((c == ',' && (last == ',' || last == '(')) ||
+        (c == ')' && last == ',')) {
+      return Status::Error(path + ": line " + std::to_string(line) +
+                           ": an empty parameter ('" + std::string(1, last) +
+                           std::string(1, c) + "')" +
+                           (entity.empty() ? "" : " in entity " + entity));
+    }
+    statement_start = c == ';';
+    last = c;
+  }
+  return Status::Ok();
+}
+
 // The IGES pre-check. OCCT 7.6's IGES parser trusts the counts of a
 // B-spline curve (126) or surface (128): when K or M disagree with the
 // parameters present, IGESGeom_BSplineCurve/Surface::Init read arrays that
@@ -507,7 +562,10 @@ Status LoadFaces(const std::string& path, LoadedFile* loaded) {
   std::string text;
   Status s = ReadText(path, &text);
   if (s.ok()) s = CheckComplete(path, text);
-  if (s.ok() && !IsStep(path)) s = CheckIgesLayout(path, text);
+  if (s.ok()) {
+    s = IsStep(path) ? CheckStepParameters(path, text)
+                     : CheckIgesLayout(path, text);
+  }
   if (!s.ok()) return s;
   SilenceOcct();
   TopoDS_Shape shape;

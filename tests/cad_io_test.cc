@@ -382,6 +382,12 @@ TEST_F(CadIoTest, BadFilesNameTheFile) {
       << std::string(hypar).replace(net, 9, "(#32,#99999)");
   std::ofstream(dir_.File("wrongtype.stp"))
       << std::string(hypar).replace(net, 9, "(#32,#3)");
+  // An empty parameter between two rows of the net: OCCT 7.6's STEP parser
+  // crashed on it (SIGSEGV, found by tests/fuzz/mutate_cad.py).
+  const size_t row = hypar.find("\n    ,(");
+  ASSERT_NE(row, std::string::npos);
+  std::ofstream(dir_.File("gap.stp"))
+      << std::string(hypar).replace(row, 7, "\n  ,  ,(");
   const std::pair<std::string, std::string> rows[] = {
       {"empty.stp", "empty.stp: the file is empty"},
       {"half.stp", "half.stp: truncated STEP file"},
@@ -390,6 +396,7 @@ TEST_F(CadIoTest, BadFilesNameTheFile) {
       {"vertex.stp", "vertex.stp: the file holds no surface"},
       {"dangling.stp", "dangling.stp: Unresolved Reference"},
       {"wrongtype.stp", "wrongtype.stp: entity #31: Parameter n0.2"},
+      {"gap.stp", "gap.stp: line 46: an empty parameter (',,') in entity #31"},
       {"missing.stp", "missing.stp: cannot open"},
   };
   for (const auto& [name, expected] : rows) {
