@@ -49,9 +49,12 @@
 #include <XSControl_Reader.hxx>
 #include <XSControl_WorkSession.hxx>
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <gp_Pln.hxx>
@@ -144,6 +147,372 @@ Status CheckComplete(const std::string& path, const std::string& text) {
   return Status::Ok();
 }
 
+// ISO 10303-21 has no empty parameter (an omitted value is $), but OCCT
+// 7.6's STEP parser takes one between two lists, ", ,(", for an entity it
+// never made and crashed (README, "Hostile files"). Refuses an empty
+// parameter anywhere (",,", "(," or ",)"), outside strings and comments.
+Status CheckStepParameters(const std::string& path, const std::string& text) {
+  int line = 1;
+  char last = '\0';    // the last character outside blanks
+  std::string entity;  // the instance being read, e.g. "#31"
+  bool statement_start = true;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    if (std::isspace(static_cast<unsigned char>(c))) continue;
+    if (c == '\'') {  // a string; '' is a quote inside it
+      for (++i; i < text.size(); ++i) {
+        if (text[i] == '\n') ++line;
+        if (text[i] != '\'') continue;
+        if (i + 1 < text.size() && text[i + 1] == '\'') {
+          ++i;
+        } else {
+          break;
+        }
+      }
+      last = '\'';
+      statement_start = false;
+      continue;
+    }
+    if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+      const size_t end = text.find("*/", i + 2);
+      const size_t stop = end == std::string::npos ? text.size() : end + 1;
+      line += static_cast<int>(
+          std::count(text.begin() + i, text.begin() + stop, '\n'));
+      i = stop;
+      continue;
+    }
+    if (statement_start && c == '#') {
+      size_t j = i + 1;
+      while (j < text.size() &&
+             std::isdigit(static_cast<unsigned char>(text[j])))
+        ++j;
+      entity = text.substr(i, j - i);
+    }
+    if ((c == ',' && (last == ',' || last == '(')) ||
+        (c == ')' && last == ',')) {
+      return Status::Error(path + ": line " + std::to_string(line) +
+                           ": an empty parameter ('" + std::string(1, last) +
+                           std::string(1, c) + "')" +
+                           (entity.empty() ? "" : " in entity " + entity));
+    }
+    statement_start = c == ';';
+    last = c;
+  }
+  return Status::Ok();
+}
+
+// The IGES pre-check. OCCT 7.6's IGES parser trusts the counts of a
+// B-spline curve (126) or surface (128): when K or M disagree with the
+// parameters present, IGESGeom_BSplineCurve/Surface::Init read arrays that
+// were never filled and the process dies before tpopt gets control
+// (README, "Hostile files"). So tpopt checks the layout of IGES 5.3's fixed
+// ASCII form first: 80-column records, column 73 the section (S, G, D, P, T
+// in that order), columns 74-80 the record's number in its section; two
+// Directory Entry records an entity, whose parameter data pointer and line
+// count must lie in the P section, whose P records point back at it
+// (columns 66-72) and hold one record (columns 1-64) that starts with its
+// type and ends with the record delimiter; and the counts of 126 and 128
+// against the parameters present.
+constexpr int kIgesColumns = 80;
+constexpr char kIgesSections[] = "SGDPT";
+
+std::string Trim(const std::string& s) {
+  const size_t b = s.find_first_not_of(' ');
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(' ') - b + 1);
+}
+
+// An integer field; blank is IGES's default, 0.
+bool IgesInteger(const std::string& field, long long* value) {
+  const std::string s = Trim(field);
+  if (s.empty()) {
+    *value = 0;
+    return true;
+  }
+  char* end = nullptr;
+  errno = 0;
+  *value = std::strtoll(s.c_str(), &end, 10);
+  return *end == '\0' && errno == 0;
+}
+
+// A real parameter (exponent E or D); blank is the default, 0.
+bool IgesReal(const std::string& field) {
+  std::string s = Trim(field);
+  if (s.empty()) return true;
+  std::replace(s.begin(), s.end(), 'D', 'E');
+  std::replace(s.begin(), s.end(), 'd', 'e');
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return *end == '\0' && std::isfinite(std::strtod(s.c_str(), nullptr));
+}
+
+// Splits a record at the parameter delimiter up to the record delimiter.
+// A Hollerith string (nH followed by n characters) may hold either.
+bool SplitIgesRecord(const std::string& data, char param_delim,
+                     char record_delim, std::vector<std::string>* params,
+                     std::string* why) {
+  params->clear();
+  size_t i = 0;
+  while (i < data.size()) {
+    const size_t start = i;
+    while (i < data.size() && data[i] == ' ') ++i;
+    size_t digits = i;
+    while (digits < data.size() &&
+           std::isdigit(static_cast<unsigned char>(data[digits])))
+      ++digits;
+    if (digits > i && digits - i < 9 && digits < data.size() &&
+        data[digits] == 'H') {
+      const size_t n = std::stoul(data.substr(i, digits - i));
+      if (digits + 1 + n > data.size()) {
+        *why = "the string '" + data.substr(i, 20) + "' runs past the end";
+        return false;
+      }
+      i = digits + 1 + n;
+      while (i < data.size() && data[i] == ' ') ++i;
+    } else {
+      while (i < data.size() && data[i] != param_delim &&
+             data[i] != record_delim)
+        ++i;
+    }
+    if (i >= data.size()) break;
+    params->push_back(Trim(data.substr(start, i - start)));
+    if (data[i] == record_delim) return true;
+    if (data[i] != param_delim) {
+      *why = "'" + std::string(1, data[i]) + "' after the string '" +
+             params->back() + "'";
+      return false;
+    }
+    ++i;
+  }
+  *why = std::string("no record delimiter '") + record_delim + "'";
+  return false;
+}
+
+// The delimiters from the Global section's first two parameters (1Hc, or
+// empty for the defaults ',' and ';').
+bool IgesDelimiters(const std::string& global, char* param_delim,
+                    char* record_delim) {
+  size_t i = global.find_first_not_of(' ');
+  if (i == std::string::npos) return false;
+  *param_delim = ',';
+  if (global.compare(i, 2, "1H") == 0 && i + 3 < global.size()) {
+    *param_delim = global[i + 2];
+    i += 3;
+  }
+  if (global[i] != *param_delim) return false;
+  i = global.find_first_not_of(' ', i + 1);
+  if (i == std::string::npos) return false;
+  *record_delim = ';';
+  if (global.compare(i, 2, "1H") == 0 && i + 3 < global.size()) {
+    *record_delim = global[i + 2];
+    i += 3;
+  }
+  return *record_delim != *param_delim &&
+         (global[i] == *param_delim || global[i] == *record_delim);
+}
+
+// The counts of a rational B-spline curve (126) or surface (128) against
+// its parameters (params[0] is the type). Curve: K, M, PROP1-4, K + M + 2
+// knots, K + 1 weights, 3 (K + 1) coordinates, V(0), V(1) (the unit normal
+// that may follow is optional). Surface: K1, K2, M1, M2, PROP1-5, K1 + M1 +
+// 2 and K2 + M2 + 2 knots, (K1 + 1)(K2 + 1) weights, three times as many
+// coordinates, U(0), U(1), V(0), V(1). The degree M >= 1 and K >= M.
+Status CheckIgesBSpline(const std::string& name, bool surface,
+                        const std::vector<std::string>& params) {
+  const std::vector<std::string> labels =
+      surface
+          ? std::vector<std::string>{"K1",    "K2",    "M1",    "M2",   "PROP1",
+                                     "PROP2", "PROP3", "PROP4", "PROP5"}
+          : std::vector<std::string>{"K",     "M",     "PROP1",
+                                     "PROP2", "PROP3", "PROP4"};
+  const long long present = static_cast<long long>(params.size());
+  std::vector<long long> n(labels.size());
+  for (size_t i = 0; i < labels.size(); ++i) {
+    if (i + 1 >= params.size()) {
+      return Status::Error(name + ": its parameter data end after " +
+                           std::to_string(present - 1) +
+                           " parameters, before " + labels[i]);
+    }
+    if (!IgesInteger(params[i + 1], &n[i])) {
+      return Status::Error(name + ": " + labels[i] + " '" + params[i + 1] +
+                           "' is not an integer");
+    }
+  }
+  const int pairs = surface ? 2 : 1;
+  std::ostringstream counts;
+  for (int d = 0; d < pairs; ++d) {
+    const long long k = n[d], m = n[d + pairs];
+    counts << (d > 0 ? ", " : "") << labels[d] << " = " << k << ", "
+           << labels[d + pairs] << " = " << m;
+    if (m < 1 || k < m) {
+      return Status::Error(name + ": " + counts.str() +
+                           ": the degree must be at least 1 and K at least M");
+    }
+    if (k >= present) {
+      return Status::Error(name + ": " + counts.str() + " ask for more than " +
+                           "the " + std::to_string(present - 1) +
+                           " parameters its parameter data hold");
+    }
+  }
+  long long need = 1 + static_cast<long long>(labels.size());
+  if (surface) {
+    need +=
+        (n[0] + n[2] + 2) + (n[1] + n[3] + 2) + 4 * (n[0] + 1) * (n[1] + 1) + 4;
+  } else {
+    need += (n[0] + n[1] + 2) + 4 * (n[0] + 1) + 2;
+  }
+  if (present < need) {
+    return Status::Error(
+        name + ": " + counts.str() + " need " + std::to_string(need - 1) +
+        " parameters, its parameter data hold " + std::to_string(present - 1));
+  }
+  for (long long i = static_cast<long long>(labels.size()) + 1; i < need; ++i) {
+    if (!IgesReal(params[i])) {
+      return Status::Error(name + ": parameter " + std::to_string(i) + " '" +
+                           params[i] + "' is not a number");
+    }
+  }
+  return Status::Ok();
+}
+
+Status CheckIgesLayout(const std::string& path, const std::string& text) {
+  std::vector<std::string> sections[5];
+  std::vector<int> first_line(5, 0);  // file line of each section's start
+  int stage = 0, line_number = 0;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos &&
+        in.peek() == std::char_traits<char>::eof())
+      break;  // a blank last line
+    const std::string where = path + ": line " + std::to_string(line_number);
+    if (line.size() != kIgesColumns) {
+      return Status::Error(where + ": a record of " +
+                           std::to_string(line.size()) + " columns, not " +
+                           std::to_string(kIgesColumns) +
+                           " (IGES fixed ASCII form)");
+    }
+    const char letter = line[72];
+    const char* found = std::strchr(kIgesSections, letter);
+    if (letter == '\0' || found == nullptr) {
+      return Status::Error(where + ": column 73 is '" + std::string(1, letter) +
+                           "', not S, G, D, P or T (a section letter)");
+    }
+    const int k = static_cast<int>(found - kIgesSections);
+    if (k < stage) {
+      return Status::Error(where + ": a " + std::string(1, letter) +
+                           " record after the " +
+                           std::string(1, kIgesSections[stage]) + " section");
+    }
+    stage = k;
+    long long sequence = 0;
+    const long long expected = static_cast<long long>(sections[k].size()) + 1;
+    if (!IgesInteger(line.substr(73), &sequence) || sequence != expected) {
+      return Status::Error(where + ": sequence number '" + line.substr(73) +
+                           "', expected " + std::to_string(expected) +
+                           " in the " + std::string(1, letter) + " section");
+    }
+    if (sections[k].empty()) first_line[k] = line_number;
+    sections[k].push_back(line);
+  }
+  const std::vector<std::string>& global = sections[1];
+  const std::vector<std::string>& directory = sections[2];
+  const std::vector<std::string>& parameters = sections[3];
+  if (sections[4].size() != 1) {
+    return Status::Error(path + ": " + std::to_string(sections[4].size()) +
+                         " Terminate records, not 1");
+  }
+  for (int k = 0; k < 4; ++k) {
+    const std::string field = sections[4][0].substr(8 * k, 8);
+    long long count = -1;
+    if (field[0] != kIgesSections[k] || !IgesInteger(field.substr(1), &count) ||
+        count != static_cast<long long>(sections[k].size())) {
+      return Status::Error(path + ": the Terminate record's field '" + field +
+                           "' does not count the " +
+                           std::to_string(sections[k].size()) + " " +
+                           std::string(1, kIgesSections[k]) + " records");
+    }
+  }
+  if (global.empty()) return Status::Error(path + ": no Global section");
+  if (directory.size() % 2 != 0) {
+    return Status::Error(path + ": the Directory Entry section has " +
+                         std::to_string(directory.size()) +
+                         " records, not two an entity");
+  }
+  std::string global_text;
+  for (const std::string& g : global) global_text += g.substr(0, 72);
+  char param_delim = ',', record_delim = ';';
+  std::vector<std::string> params;
+  std::string why;
+  if (!IgesDelimiters(global_text, &param_delim, &record_delim) ||
+      !SplitIgesRecord(global_text, param_delim, record_delim, &params, &why)) {
+    return Status::Error(path + ": line " + std::to_string(first_line[1]) +
+                         ": the Global section is not a record" +
+                         (why.empty() ? "" : ": " + why));
+  }
+  for (size_t e = 0; e < directory.size(); e += 2) {
+    const std::string& a = directory[e];
+    const std::string& b = directory[e + 1];
+    const int de = static_cast<int>(e) + 1;
+    long long type = 0, type2 = 0, pointer = 0, count = 0;
+    const std::string where = path + ": directory entry " + std::to_string(de) +
+                              " (line " + std::to_string(first_line[2] + e) +
+                              ")";
+    if (!IgesInteger(a.substr(0, 8), &type) ||
+        !IgesInteger(b.substr(0, 8), &type2) || type != type2) {
+      return Status::Error(where + ": entity type '" + Trim(a.substr(0, 8)) +
+                           "' and '" + Trim(b.substr(0, 8)) + "' disagree");
+    }
+    const std::string name = path + ": entity DE " + std::to_string(de) +
+                             " (type " + std::to_string(type) + ")";
+    if (!IgesInteger(a.substr(8, 8), &pointer) ||
+        !IgesInteger(b.substr(24, 8), &count)) {
+      return Status::Error(name + ": parameter data pointer '" +
+                           Trim(a.substr(8, 8)) + "' or line count '" +
+                           Trim(b.substr(24, 8)) + "' is not a number");
+    }
+    const long long nbp = static_cast<long long>(parameters.size());
+    if (pointer < 1 || count < 1 || pointer > nbp ||
+        count > nbp - pointer + 1) {
+      return Status::Error(
+          name + ": its parameter data, " + std::to_string(count) +
+          " lines from P line " + std::to_string(pointer) +
+          ", do not lie in the P section (" + std::to_string(nbp) + " lines)");
+    }
+    std::string data;
+    for (long long p = pointer; p < pointer + count; ++p) {
+      const std::string& record = parameters[p - 1];
+      long long back = 0;
+      if (!IgesInteger(record.substr(64, 8), &back) || back != de) {
+        return Status::Error(name + ": P line " + std::to_string(p) +
+                             " (line " + std::to_string(first_line[3] + p - 1) +
+                             ") points back to directory entry '" +
+                             Trim(record.substr(64, 8)) + "'");
+      }
+      data += record.substr(0, 64);
+    }
+    if (!SplitIgesRecord(data, param_delim, record_delim, &params, &why)) {
+      return Status::Error(name + ": its parameter data (P lines " +
+                           std::to_string(pointer) + " to " +
+                           std::to_string(pointer + count - 1) + "): " + why);
+    }
+    long long first = 0;
+    if (params.empty() || !IgesInteger(params[0], &first) || first != type) {
+      return Status::Error(name + ": its parameter data start with '" +
+                           (params.empty() ? "" : params[0]) +
+                           "', not its type");
+    }
+    if (type == 126 || type == 128) {
+      Status s = CheckIgesBSpline(name, type == 128, params);
+      if (!s.ok()) return s;
+    }
+  }
+  return Status::Ok();
+}
+
 // Fails naming the first entity the parser flagged: OCCT 7.6 goes on to
 // transfer such a model, and a B-spline whose control point refers to a
 // missing or wrong entity crashes its STEP translator (README).
@@ -193,6 +562,10 @@ Status LoadFaces(const std::string& path, LoadedFile* loaded) {
   std::string text;
   Status s = ReadText(path, &text);
   if (s.ok()) s = CheckComplete(path, text);
+  if (s.ok()) {
+    s = IsStep(path) ? CheckStepParameters(path, text)
+                     : CheckIgesLayout(path, text);
+  }
   if (!s.ok()) return s;
   SilenceOcct();
   TopoDS_Shape shape;
@@ -386,6 +759,19 @@ Status LoadChosenFace(const std::string& path, const CadReadOptions& options,
   Status s = LoadFaces(path, loaded);
   if (s.ok()) s = ChooseFace(path, *loaded, options.face_index, face);
   return s;
+}
+
+// Under GuardOcct, reads the file and its chosen face and runs `body` on
+// them (the reads of ReadCadRuledSurface and ReadCadBSplineSurface).
+Status ReadChosenFace(
+    const std::string& path, const CadReadOptions& options,
+    const std::function<Status(const LoadedFile&, const ChosenFace&)>& body) {
+  return GuardOcct(path, [&]() {
+    LoadedFile loaded;
+    ChosenFace face;
+    const Status s = LoadChosenFace(path, options, &loaded, &face);
+    return s.ok() ? body(loaded, face) : s;
+  });
 }
 
 std::vector<double> FlatKnots(const Handle(Geom_BSplineSurface) & bs,
@@ -738,89 +1124,85 @@ Status ListCadFaces(const std::string& path,
 Status ReadCadRuledSurface(const std::string& path,
                            const CadReadOptions& options, RuledSurface* surface,
                            CadSurfaceInfo* info) {
-  return GuardOcct(path, [&]() {
-    LoadedFile loaded;
-    ChosenFace face;
-    Status s = LoadChosenFace(path, options, &loaded, &face);
-    if (!s.ok()) return s;
-    const std::string& what = face.what;
-    const Handle(Geom_BSplineSurface)& bs = face.bspline;
-    const std::string name =
-        Stem(path) + " face " + std::to_string(face.summary.index);
-    // The candidate rulings: the one asked for, else the exactly ruled
-    // direction (v first: a bilinear patch is ruled both ways), else both.
-    std::vector<bool> candidates;
-    if (!options.ruling.empty()) {
-      candidates = {options.ruling == "u"};
-    } else if (ExactlyRuled(bs, false)) {
-      candidates = {false};
-    } else if (ExactlyRuled(bs, true)) {
-      candidates = {true};
-    } else {
-      candidates = {false, true};
-    }
-    double best = std::numeric_limits<double>::infinity();
-    for (bool ruling_u : candidates) {
-      // N = r_u x r_v is S_u x S_v when the ruling is v, its opposite when u.
-      const double sign =
-          OutwardSign(face, options.flip_cutter_side) * (ruling_u ? -1.0 : 1.0);
-      RuledSurface ruled;
-      s = RailsOf(bs, ruling_u, what, name,
-                  sign > 0 ? CutterSide::kPositive : CutterSide::kNegative,
-                  &ruled);
-      if (!s.ok()) return s;
-      const bool exact = ExactlyRuled(bs, ruling_u);
-      const double deviation =
-          exact ? 0.0 : RuledDeviationMm(bs, ruling_u, ruled);
-      if (deviation < best) {
-        best = deviation;
-        *surface = ruled;
-        info->ruling = ruling_u ? "u" : "v";
-        info->exact_ruled = exact;
-        info->ruled_deviation_mm = deviation;
-      }
-    }
-    FillInfo(path, loaded, face, info);
-    if (best > options.max_ruled_deviation_mm) {
-      std::ostringstream err;
-      err << what << " is not ruled: it lies up to " << best
-          << " mm from the ruled surface between its boundary curves across "
-             "the ruling "
-          << info->ruling << ", above --max_ruled_deviation_mm="
-          << options.max_ruled_deviation_mm;
-      return Status::Error(err.str());
-    }
-    return Status::Ok();
-  });
+  return ReadChosenFace(
+      path, options, [&](const LoadedFile& loaded, const ChosenFace& face) {
+        const std::string& what = face.what;
+        const Handle(Geom_BSplineSurface)& bs = face.bspline;
+        const std::string name =
+            Stem(path) + " face " + std::to_string(face.summary.index);
+        // The candidate rulings: the one asked for, else the exactly ruled
+        // direction (v first: a bilinear patch is ruled both ways), else both.
+        std::vector<bool> candidates;
+        if (!options.ruling.empty()) {
+          candidates = {options.ruling == "u"};
+        } else if (ExactlyRuled(bs, false)) {
+          candidates = {false};
+        } else if (ExactlyRuled(bs, true)) {
+          candidates = {true};
+        } else {
+          candidates = {false, true};
+        }
+        double best = std::numeric_limits<double>::infinity();
+        for (bool ruling_u : candidates) {
+          // N = r_u x r_v is S_u x S_v when the ruling is v, its opposite when
+          // u.
+          const double sign = OutwardSign(face, options.flip_cutter_side) *
+                              (ruling_u ? -1.0 : 1.0);
+          RuledSurface ruled;
+          Status s = RailsOf(
+              bs, ruling_u, what, name,
+              sign > 0 ? CutterSide::kPositive : CutterSide::kNegative, &ruled);
+          if (!s.ok()) return s;
+          const bool exact = ExactlyRuled(bs, ruling_u);
+          const double deviation =
+              exact ? 0.0 : RuledDeviationMm(bs, ruling_u, ruled);
+          if (deviation < best) {
+            best = deviation;
+            *surface = ruled;
+            info->ruling = ruling_u ? "u" : "v";
+            info->exact_ruled = exact;
+            info->ruled_deviation_mm = deviation;
+          }
+        }
+        FillInfo(path, loaded, face, info);
+        if (best > options.max_ruled_deviation_mm) {
+          std::ostringstream err;
+          err << what << " is not ruled: it lies up to " << best
+              << " mm from the ruled surface between its boundary curves "
+                 "across "
+                 "the ruling "
+              << info->ruling << ", above --max_ruled_deviation_mm="
+              << options.max_ruled_deviation_mm;
+          return Status::Error(err.str());
+        }
+        return Status::Ok();
+      });
 }
 
 Status ReadCadBSplineSurface(const std::string& path,
                              const CadReadOptions& options,
                              BSplineSurface* surface, double* cutter_side_sign,
                              CadSurfaceInfo* info) {
-  return GuardOcct(path, [&]() {
-    LoadedFile loaded;
-    ChosenFace face;
-    Status s = LoadChosenFace(path, options, &loaded, &face);
-    if (!s.ok()) return s;
-    const std::string& what = face.what;
-    const Handle(Geom_BSplineSurface)& bs = face.bspline;
-    if (bs->UDegree() > BSplineSurface::kMaxDegree ||
-        bs->VDegree() > BSplineSurface::kMaxDegree) {
-      return Status::Error(what + ": degree " + std::to_string(bs->UDegree()) +
-                           " x " + std::to_string(bs->VDegree()) +
-                           " is above " +
-                           std::to_string(BSplineSurface::kMaxDegree));
-    }
-    s = BSplineSurface::Create(bs->UDegree(), bs->VDegree(),
-                               FlatKnots(bs, true), FlatKnots(bs, false),
-                               Net(bs, false), what, surface);
-    if (!s.ok()) return s;
-    *cutter_side_sign = OutwardSign(face, options.flip_cutter_side);
-    FillInfo(path, loaded, face, info);
-    info->ruling.clear();
-    return Status::Ok();
-  });
+  return ReadChosenFace(
+      path, options, [&](const LoadedFile& loaded, const ChosenFace& face) {
+        const std::string& what = face.what;
+        const Handle(Geom_BSplineSurface)& bs = face.bspline;
+        if (bs->UDegree() > BSplineSurface::kMaxDegree ||
+            bs->VDegree() > BSplineSurface::kMaxDegree) {
+          return Status::Error(what + ": degree " +
+                               std::to_string(bs->UDegree()) + " x " +
+                               std::to_string(bs->VDegree()) + " is above " +
+                               std::to_string(BSplineSurface::kMaxDegree));
+        }
+        Status s = BSplineSurface::Create(
+            bs->UDegree(), bs->VDegree(), FlatKnots(bs, true),
+            FlatKnots(bs, false), Net(bs, false), what, surface);
+        if (!s.ok()) return s;
+        *cutter_side_sign = OutwardSign(face, options.flip_cutter_side);
+        FillInfo(path, loaded, face, info);
+        info->ruling.clear();
+        return Status::Ok();
+      });
 }
 
 Status WriteCadPatches(const std::string& path,

@@ -115,6 +115,13 @@ TEST_F(BadInputMatrixTest, CadSurfaceErrorsExitOneNamingTheFileAndFace) {
   ASSERT_TRUE(WriteCadPatches(dir_.File("plane.igs"), {plane}, {}).ok());
   const std::string text = testing::ReadFileText(good);
   Write("cut.stp", text.substr(0, text.size() / 2));
+  // An IGES surface (128) whose K1 asks for more poles than it holds
+  // (tpopt's IGES pre-check, model/cad_io.cc).
+  ASSERT_TRUE(WriteCadPatches(dir_.File("good.igs"), {ruled}, {}).ok());
+  std::string iges = testing::ReadFileText(dir_.File("good.igs"));
+  const size_t k1 = iges.find("\n128,3,1,3,1,");
+  ASSERT_NE(k1, std::string::npos);
+  Write("k1.igs", iges.replace(k1 + 5, 1, "9"));
   Write("empty.step", "");
   const std::string path = Write("p.cls", "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\n");
   const Row rows[] = {
@@ -128,6 +135,8 @@ TEST_F(BadInputMatrixTest, CadSurfaceErrorsExitOneNamingTheFileAndFace) {
        "two.stp: face 1 is a Geom_Plane, not a B-spline"},
       {"plane.igs", "", "--surface=" + dir_.File("plane.igs"),
        "plane.igs: face 0 is a Geom_Plane"},
+      {"k1.igs", "", "--surface=" + dir_.File("k1.igs"),
+       "k1.igs: entity DE 3 (type 128): K1 = 9, M1 = 3, K2 = 1, M2 = 1 need "},
       {"good.stp", "", "--surface=" + good + " --ruling=u --max_ruled_deviation_mm=0.001",
        "good.stp: face 0 is not ruled"},
   };

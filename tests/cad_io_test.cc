@@ -382,6 +382,12 @@ TEST_F(CadIoTest, BadFilesNameTheFile) {
       << std::string(hypar).replace(net, 9, "(#32,#99999)");
   std::ofstream(dir_.File("wrongtype.stp"))
       << std::string(hypar).replace(net, 9, "(#32,#3)");
+  // An empty parameter between two rows of the net: OCCT 7.6's STEP parser
+  // crashed on it (SIGSEGV, found by tests/fuzz/mutate_cad.py).
+  const size_t row = hypar.find("\n    ,(");
+  ASSERT_NE(row, std::string::npos);
+  std::ofstream(dir_.File("gap.stp"))
+      << std::string(hypar).replace(row, 7, "\n  ,  ,(");
   const std::pair<std::string, std::string> rows[] = {
       {"empty.stp", "empty.stp: the file is empty"},
       {"half.stp", "half.stp: truncated STEP file"},
@@ -390,6 +396,7 @@ TEST_F(CadIoTest, BadFilesNameTheFile) {
       {"vertex.stp", "vertex.stp: the file holds no surface"},
       {"dangling.stp", "dangling.stp: Unresolved Reference"},
       {"wrongtype.stp", "wrongtype.stp: entity #31: Parameter n0.2"},
+      {"gap.stp", "gap.stp: line 46: an empty parameter (',,') in entity #31"},
       {"missing.stp", "missing.stp: cannot open"},
   };
   for (const auto& [name, expected] : rows) {
@@ -400,6 +407,169 @@ TEST_F(CadIoTest, BadFilesNameTheFile) {
   bad.ruling = "w";
   EXPECT_NE(ReadError(good, bad).find("ruling 'w' must be u or v"),
             std::string::npos);
+}
+
+// Each inconsistency the IGES pre-check finds, made by hand in a file OCCT
+// wrote (README, "Hostile files"). The
+// parameter counts are IGES 5.3's: a curve (126) has 6 + (K + M + 2) +
+// 4 (K + 1) + 2 parameters after its type and then an optional normal (3),
+// a surface (128) 9 + (K1 + M1 + 2) + (K2 + M2 + 2) + 4 (K1 + 1)(K2 + 1) + 4.
+TEST_F(CadIoTest, InconsistentIgesFilesAreRefusedNamingTheEntity) {
+  const Rails rails;
+  const std::string good = Write("good.igs", {rails.Patch()});
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(testing::ReadFileText(good));
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  // The first record of an entity's parameter data (by its start), and the
+  // entity's DE number from that record's columns 66-72.
+  auto find = [&](const std::string& start) {
+    for (size_t i = 0; i < lines.size(); ++i) {
+      if (lines[i].rfind(start, 0) == 0) return i;
+    }
+    ADD_FAILURE() << "no record starts with " << start;
+    return size_t{0};
+  };
+  const size_t surface = find("128,5,1,3,1,");  // K1 5, K2 1, M1 3, M2 1
+  const size_t curve = find("126,5,3,");        // K 5, M 3
+  const std::string surface_de =
+      std::to_string(std::stoi(lines[surface].substr(65, 7)));
+  const std::string curve_de =
+      std::to_string(std::stoi(lines[curve].substr(65, 7)));
+  size_t p_count = 0, terminate = 0, last_d = 0;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i][72] == 'P') ++p_count;
+    if (lines[i][72] == 'T') terminate = i;
+    if (lines[i][72] == 'D') last_d = i;
+  }
+  // The surface's two directory records.
+  size_t surface_d = 0;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (lines[i][72] == 'D' &&
+        std::stoi(lines[i].substr(73)) == std::stoi(surface_de))
+      surface_d = i;
+  }
+  ASSERT_EQ(lines[surface_d].substr(0, 8), "     128");
+  const std::string surface_p =
+      std::to_string(std::stoi(lines[surface_d].substr(8, 8)));
+  // Numbers as IGES right-justifies them in 8 columns.
+  auto field8 = [](const std::string& text) {
+    return std::string(8 - text.size(), ' ') + text;
+  };
+  auto with = [&](size_t line, size_t column, const std::string& text) {
+    std::vector<std::string> edited = lines;
+    edited[line].replace(column, text.size(), text);
+    return edited;
+  };
+  // The last directory entry's parameter data run to the P section's end.
+  const std::string last_de =
+      std::to_string(std::stoi(lines[last_d].substr(73)) - 1);
+  const std::string last_pointer =
+      std::to_string(std::stoi(lines[last_d - 1].substr(8, 8)));
+  const std::string last_count =
+      std::to_string(std::stoi(lines[last_d].substr(24, 8)));
+  std::vector<std::string> truncated = lines;
+  truncated.erase(truncated.begin() + (terminate - 5),
+                  truncated.begin() + terminate);
+  const std::string short_p = std::to_string(p_count - 5);
+  truncated[terminate - 5].replace(25, 7, field8(short_p).substr(1));
+  struct Row {
+    std::string name;
+    std::vector<std::string> lines;
+    std::string expected;
+  };
+  const std::string in_surface = "entity DE " + surface_de + " (type 128): ";
+  const std::string in_curve = "entity DE " + curve_de + " (type 126): ";
+  std::vector<std::string> semicolon = lines;
+  semicolon[surface + 4][semicolon[surface + 4].find(',')] = ';';
+  std::vector<std::string> narrow = lines;
+  narrow[surface + 1].erase(64, 1);
+  const Row rows[] = {
+      // A knot record of the surface or the curve that points back to no
+      // entity: OCCT 7.6 cuts the entity's parameters there, and Init of
+      // IGESGeom_BSplineSurface / IGESGeom_BSplineCurve crashed (SIGSEGV;
+      // all seven crashes of the mutation run in the README were such).
+      {"surface_back_pointer", with(surface + 1, 65, "00(0003"),
+       in_surface + "P line " + std::to_string(std::stoi(surface_p) + 1) +
+           " (line " + std::to_string(surface + 2) +
+           ") points back to directory entry '00(0003'"},
+      {"curve_back_pointer", with(curve + 1, 65, "00(0021"),
+       in_curve + "P line " +
+           std::to_string(std::stoi(lines[curve + 1].substr(73))) + " (line " +
+           std::to_string(curve + 2) +
+           ") points back to directory entry '00(0021'"},
+      {"k_too_large", with(curve, 0, "126,9,3,"),
+       in_curve + "K = 9, M = 3 need 62 parameters, its parameter data "
+                  "hold 45"},
+      {"m_too_large", with(surface, 0, "128,5,1,4,1,"),
+       in_surface + "K1 = 5, M1 = 4, K2 = 1, M2 = 1 need 76 parameters, its "
+                    "parameter data hold 75"},
+      {"record_ends_early", semicolon,
+       in_surface + "K1 = 5, M1 = 3, K2 = 1, M2 = 1 need 75 parameters"},
+      {"k_below_m", with(curve, 0, "126,2,3,"),
+       in_curve + "K = 2, M = 3: the degree must be at least 1 and K at "
+                  "least M"},
+      {"not_a_number", with(surface, 39, "X"),
+       in_surface + "parameter 10 '0.000000000000000X+00' is not a number"},
+      {"truncated_p_section", truncated,
+       "entity DE " + last_de + " (type 126): its parameter data, " +
+           last_count + " lines from P line " + last_pointer +
+           ", do not lie in the P section (" + short_p + " lines)"},
+      {"pointer_past_the_end", with(surface_d, 8, field8("9999")),
+       in_surface +
+           "its parameter data, 34 lines from P line 9999, do not "
+           "lie in the P section (" +
+           std::to_string(p_count) + " lines)"},
+      {"line_count_too_large", with(surface_d + 1, 24, field8("35")),
+       in_surface + "P line " + std::to_string(std::stoi(surface_p) + 34) +
+           " (line " + std::to_string(surface + 35) +
+           ") points back to directory entry '"},
+      {"type_differs", with(surface, 0, "126,"),
+       in_surface + "its parameter data start with '126', not its type"},
+      {"types_disagree", with(surface_d + 1, 0, field8("129")),
+       "directory entry " + surface_de + " (line " +
+           std::to_string(surface_d + 1) +
+           "): entity type '128' and '129' disagree"},
+      {"narrow_record", narrow,
+       "line " + std::to_string(surface + 2) + ": a record of 79 columns"},
+      {"sequence_number", with(surface, 79, "9"),
+       "line " + std::to_string(surface + 1) + ": sequence number"},
+      {"terminate_count", with(terminate, 31, "9"),
+       "the Terminate record's field 'P    109' does not count the " +
+           std::to_string(p_count) + " P records"},
+  };
+  for (const Row& row : rows) {
+    const std::string path = dir_.File(row.name + ".igs");
+    std::ofstream out(path, std::ios::binary);
+    for (const std::string& line : row.lines) out << line << "\n";
+    out.close();
+    const std::string error = ReadError(path);
+    EXPECT_NE(error.find(path + ": " + row.expected), std::string::npos)
+        << row.name << ": " << error;
+  }
+  // The run refuses them as bad input (exit 1), naming the entity.
+  for (const std::string name :
+       {"surface_back_pointer", "curve_back_pointer", "k_too_large",
+        "m_too_large", "truncated_p_section", "pointer_past_the_end"}) {
+    const auto r = RunCommand(
+        Tpopt("generate --quiet --cutter_radius=4 --poses=20 --surface=" +
+              dir_.File(name + ".igs") + " --out=" + dir_.File("p.cls")));
+    EXPECT_EQ(r.exit_code, 1) << name << ": " << r.output;
+    EXPECT_NE(r.output.find(name + ".igs: entity DE "), std::string::npos)
+        << r.output;
+  }
+  // The file itself, and with CR LF line ends, reads as before.
+  std::ofstream crlf(dir_.File("crlf.igs"), std::ios::binary);
+  for (const std::string& line : lines) crlf << line << "\r\n";
+  crlf.close();
+  for (const std::string& path : {good, dir_.File("crlf.igs")}) {
+    RuledSurface read;
+    CadSurfaceInfo info;
+    const Status s = ReadCadRuledSurface(path, {}, &read, &info);
+    ASSERT_TRUE(s.ok()) << s.message();
+    EXPECT_LT(MaxGridGapMm(read, rails.Surface()), kTolMm) << path;
+  }
 }
 
 TEST_F(CadIoTest, SharedRuledSurfacesRoundTripThroughTheirWriter) {
