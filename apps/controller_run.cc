@@ -23,8 +23,7 @@ Status Number(const nlohmann::json& j, const std::string& path, const std::strin
 
 Status FromJson(const std::string& path, const nlohmann::json& j, ControllerRun* run) {
   ControllerRun r;
-  Status s = JsonStringOr(j, "program", path, "", &r.program);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(JsonStringOr(j, "program", path, "", &r.program));
   if (!j.contains("completed") || !j["completed"].is_boolean()) {
     return Status::Error(path + ": completed (true or false) is missing");
   }
@@ -34,9 +33,8 @@ Status FromJson(const std::string& path, const nlohmann::json& j, ControllerRun*
     return Status::Ok();
   }
   double stops = 0;
-  s = Number(j, path, "cycle_time_s", &r.cycle_time_s);
-  if (s.ok()) s = Number(j, path, "stops_in_cuts", &stops);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(Number(j, path, "cycle_time_s", &r.cycle_time_s));
+  RETURN_IF_ERROR(Number(j, path, "stops_in_cuts", &stops));
   r.stops_in_cuts = static_cast<int>(stops);
   if (j.contains("limit_excess") && j["limit_excess"].is_array()) {
     r.limits_exceeded = static_cast<int>(j["limit_excess"].size());
@@ -55,9 +53,8 @@ Status FromJson(const std::string& path, const nlohmann::json& j, ControllerRun*
       if (!cuts.contains(quantity)) {
         return Status::Error(path + ": " + where + "." + quantity + " is missing");
       }
-      s = Number(cuts[quantity], path + ": " + where + "." + quantity, "peak", peak);
-      if (s.ok()) s = Number(cuts[quantity], path + ": " + where + "." + quantity, "p99", p99);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(Number(cuts[quantity], path + ": " + where + "." + quantity, "peak", peak));
+      RETURN_IF_ERROR(Number(cuts[quantity], path + ": " + where + "." + quantity, "p99", p99));
     }
   }
   *run = r;

@@ -1,6 +1,9 @@
-// Exit codes of the tpopt command (DESIGN.md).
+// Exit codes of the tpopt command (docs/ARCHITECTURE.md, "Errors and exit
+// codes"), and the one mapping from a Status's code to them.
 #ifndef TPOPT_APPS_EXIT_CODES_H_
 #define TPOPT_APPS_EXIT_CODES_H_
+
+#include "model/status.h"
 
 namespace tpopt {
 
@@ -10,6 +13,23 @@ enum ExitCode {
   kExitUsage = 2,        // unknown subcommand, flag or flag value
   kExitSolverFailure = 3 // the output is not written
 };
+
+// 0 for ok, 1 for bad input and for a file the system would not read or
+// write, 2 for usage, 3 for a solver failure.
+inline ExitCode ExitCodeOf(const Status& status) {
+  switch (status.code()) {
+    case StatusCode::kOk:
+      return kExitSuccess;
+    case StatusCode::kUsage:
+      return kExitUsage;
+    case StatusCode::kSolver:
+      return kExitSolverFailure;
+    case StatusCode::kBadInput:
+    case StatusCode::kIo:
+      return kExitBadInput;
+  }
+  return kExitBadInput;
+}
 
 }  // namespace tpopt
 

@@ -92,8 +92,7 @@ Status ApplyArgs(const std::vector<std::string>& args, const std::string& where_
     if (!where_prefix.empty()) where = where_prefix + ":" + std::to_string(lines[i]) + ": ";
     bool used_next = false;
     const std::string next = i + 1 < args.size() ? args[i + 1] : "";
-    Status s = ApplyOne(arg, where_prefix.empty() ? next : "", &used_next, where, depth);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ApplyOne(arg, where_prefix.empty() ? next : "", &used_next, where, depth));
     if (used_next) ++i;
   }
   return Status::Ok();

@@ -1,7 +1,7 @@
 #include "apps/flags.h"
 
 DEFINE_string(surface, "",
-              "The surface: tpopt's JSON (DESIGN.md format), or a face of a STEP (.stp, .step) or "
+              "The surface: tpopt's JSON (docs/ARCHITECTURE.md), or a face of a STEP (.stp, .step) or "
               "IGES (.igs, .iges) file.");
 DEFINE_int32(face, -1,
              "STEP/IGES --surface: the face to read, 0-based (-1: the file must hold one face; "

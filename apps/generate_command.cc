@@ -48,7 +48,7 @@ int RunGenerate(const Invocation&) {
   if (s.ok()) s = SaveToolPath(FLAGS_out, machine, path);
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt generate: %s\n", s.message().c_str());
-    return kExitBadInput;
+    return ExitCodeOf(s);
   }
   if (!FLAGS_quiet) {
     std::fprintf(stderr, "tpopt generate: wrote %zu poses to %s\n", path.poses.size(),

@@ -12,12 +12,12 @@
 #include "apps/motion_profile.h"
 #include "apps/svg_plot.h"
 #include "apps/version.h"
+#include "model/units.h"
 #include "solver/ceres_smoother.h"
 
 namespace tpopt {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 // Before in blue, after in orange: the two are told apart in grey scale too.
 constexpr const char* kSeriesColours[] = {"#1f77b4", "#ff7f0e", "#2ca02c"};
 

@@ -4,11 +4,11 @@
 #include <limits>
 
 #include "model/axis_metrics.h"
+#include "model/units.h"
 
 namespace tpopt {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
 constexpr std::array<int, 2> kRotaries = {kA, kC};
 
@@ -17,8 +17,7 @@ constexpr std::array<int, 2> kRotaries = {kA, kC};
 Status ComputeMotionProfile(const Machine& machine, const ToolPath& path,
                             double default_feed_mm_per_min, MotionProfile* profile) {
   std::vector<JointVector> joints;
-  Status s = machine.AssignJoints(path, &joints);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(machine.AssignJoints(path, &joints));
   const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
   MotionProfile out;
   const size_t n = joints.size();

@@ -22,7 +22,7 @@ Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion
 Status LinkMoveOptionsFromFlags(LinkMoveOptions* links) {
   links->feed_ratio = FLAGS_link_feed_ratio;
   std::string why;
-  if (!links->IsValid(&why)) return Status::Error("--link_feed_ratio: " + why);
+  if (!links->IsValid(&why)) return Status::Error(why);
   return Status::Ok();
 }
 

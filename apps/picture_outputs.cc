@@ -24,15 +24,13 @@ Status WritePictures(const std::string& title, const std::string& command_line,
     std::string html;
     Status s = RenderHtmlReport(inputs, &html);
     if (!s.ok()) return Status::Error(FLAGS_html + ": " + s.message());
-    s = WriteFileAtomically(FLAGS_html, html);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(WriteFileAtomically(FLAGS_html, html));
   }
   if (!FLAGS_vtk.empty()) {
     const ReportedPath& shown = paths.back();
     const PolyData scene = BuildPathScene(*shown.path, job.cutter, job.surface_or_null(),
                                           DeviationGridOf(*shown.metrics));
-    Status s = WritePolyData(FLAGS_vtk, scene);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(WritePolyData(FLAGS_vtk, scene));
   }
   return Status::Ok();
 }

@@ -6,12 +6,11 @@
 #include "apps/huge_page_malloc.h"
 #include "apps/version.h"
 #include "model/atomic_file.h"
+#include "model/units.h"
 #include "solver/smoothing_pipeline.h"
 
 namespace tpopt {
 namespace {
-
-constexpr double kRadToDeg = 180.0 / M_PI;
 
 nlohmann::json AxisJson(const AxisMotion& m, bool rotary) {
   const double k = rotary ? kRadToDeg : 1.0;

@@ -1,4 +1,4 @@
-// The report JSON (DESIGN.md "Command line") and the short human summary.
+// The report JSON (README.md, "What the report measures") and the short human summary.
 #ifndef TPOPT_APPS_REPORT_H_
 #define TPOPT_APPS_REPORT_H_
 

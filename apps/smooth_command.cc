@@ -148,7 +148,7 @@ int RunSmooth(const Invocation& invocation) {
   settings.feed.max_feed_step = FLAGS_max_feed_step;
   std::string feed_why;
   if (s.ok() && !settings.feed.IsValid(&feed_why)) {
-    s = Status::Error("--max_feed_mm_per_min, --max_feed_factor, --max_feed_step: " + feed_why);
+    s = Status::Error(feed_why);
   }
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
   if (s.ok()) {

@@ -16,13 +16,12 @@
 #include "apps/report.h"
 #include "model/freeform_surface.h"
 #include "model/path_metrics.h"
+#include "model/units.h"
 #include "solver/strip_path.h"
 #include "solver/strip_path_metrics.h"
 
 namespace tpopt {
 namespace {
-
-constexpr double kDegToRad = M_PI / 180.0;
 
 // "torus:R,r" in mm.
 Status ParseTorusFlag(const std::string& text, TorusCutter* cutter) {

@@ -24,12 +24,12 @@
 #include "model/json_io.h"
 #include "model/link_moves.h"
 #include "model/path_generator.h"
+#include "model/units.h"
 #include "solver/smoothing_pipeline.h"
 
 namespace tpopt {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr double kNoValue = std::nan("");
 
 // LinuxCNC's own 7-blade impeller program for the xyzac-trt sim machine

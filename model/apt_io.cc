@@ -16,6 +16,7 @@
 #include "model/atomic_file.h"
 #include "model/circular_arc.h"
 #include "model/rational_curve.h"
+#include "model/units.h"
 
 namespace tpopt {
 namespace {
@@ -108,7 +109,6 @@ constexpr double kCurveChordMm = 0.001;
 // How far a CIRCLE's end points or a NURBS's first control point may lie
 // from where the record says (mm): CAM systems round to 4-6 decimals.
 constexpr double kCurveFitMm = 0.01;
-constexpr double kMmPerInch = 25.4;
 
 // tpopt's own span record (AptCurveSpan): degree 3, 4 points, clamped
 // knots, then 4 x (x, y, z, 1).

@@ -6,12 +6,13 @@
 
 #include <glog/logging.h>
 
+#include "model/invalid_field.h"
 #include "model/planner_time.h"
+#include "model/units.h"
 
 namespace tpopt {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 // Relative slack before a sample counts as a violation, so that a path
 // planned exactly at a limit is not flagged by round-off.
 constexpr double kLimitSlack = 1e-6;
@@ -37,9 +38,7 @@ bool MotionOptions::IsValid(std::string* why) const {
     return true;
   }
   if (why != nullptr) {
-    std::ostringstream err;
-    err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
-    *why = err.str();
+    *why = InvalidField("--feed", default_feed_mm_per_min, "finite and > 0 mm/min");
   }
   return false;
 }

@@ -62,6 +62,7 @@
 #include <sstream>
 
 #include "model/atomic_file.h"
+#include "model/invalid_field.h"
 
 namespace tpopt {
 namespace {
@@ -1070,17 +1071,17 @@ bool CadIoAvailable() { return true; }
 
 bool CadReadOptions::IsValid(std::string* why) const {
   if (face_index < -1) {
-    *why = "face index " + std::to_string(face_index) + " must be >= 0";
+    *why = InvalidField("--face", face_index, ">= 0 (or -1: the only face)");
     return false;
   }
   if (!ruling.empty() && ruling != "u" && ruling != "v") {
-    *why = "ruling '" + ruling + "' must be u or v";
+    *why = InvalidField("--ruling", ruling, "u or v");
     return false;
   }
   if (!(max_ruled_deviation_mm >= 0.0) ||
       !std::isfinite(max_ruled_deviation_mm)) {
-    *why = "max_ruled_deviation_mm " + std::to_string(max_ruled_deviation_mm) +
-           " must be finite and >= 0";
+    *why = InvalidField("--max_ruled_deviation_mm", max_ruled_deviation_mm,
+                        "finite and >= 0");
     return false;
   }
   return true;
@@ -1088,7 +1089,7 @@ bool CadReadOptions::IsValid(std::string* why) const {
 
 bool CadWriteOptions::IsValid(std::string* why) const {
   if (length_unit != "MM" && length_unit != "INCH") {
-    *why = "length unit '" + length_unit + "' must be MM or INCH";
+    *why = InvalidField("length_unit", length_unit, "MM or INCH");
     return false;
   }
   return true;

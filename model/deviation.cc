@@ -10,7 +10,9 @@
 #include <string>
 #include <utility>
 
+#include "model/invalid_field.h"
 #include "model/rail_projection.h"
+#include "model/segment_distance.h"
 
 namespace tpopt {
 namespace {
@@ -113,16 +115,6 @@ void Motion::PoseAt(int move, double s, Eigen::Vector3d* tip,
   *axis =
       (std::sin((1.0 - s) * theta) * p0.a_w + std::sin(s * theta) * p1.a_w) /
       std::sin(theta);
-}
-
-// Distance from q to the segment [a, b], mm.
-double DistanceToSegment(const Eigen::Vector3d& q, const Eigen::Vector3d& a,
-                         const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t =
-      len2 > 0.0 ? std::clamp((q - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (q - a - t * ab).norm();
 }
 
 // Bounds on SignedDistanceToCutter for a cutter known only approximately.
@@ -610,20 +602,24 @@ bool CoveredRangeU(const RuledSurface& surface, const ToolPath& path,
 }
 
 bool DeviationOptions::IsValid(std::string* why) const {
-  std::ostringstream err;
+  std::string problem;
   const bool auto_u = std::isnan(u_min) && std::isnan(u_max);
-  if (samples_u < 2 || samples_v < 2) {
-    err << "grid " << samples_u << " x " << samples_v
-        << " must be at least 2 x 2";
+  if (samples_u < 2) {
+    problem = InvalidField("--samples_u", samples_u, ">= 2");
+  } else if (samples_v < 2) {
+    problem = InvalidField("--samples_v", samples_v, ">= 2");
   } else if (substeps < 1) {
-    err << "substeps " << substeps << " must be >= 1";
+    problem = InvalidField("substeps", substeps, ">= 1");
   } else if (!auto_u && !(u_min >= 0.0 && u_min < u_max && u_max <= 1.0)) {
-    err << "u range [" << u_min << ", " << u_max
-        << "] must satisfy 0 <= u_min < u_max <= 1 (or both NaN: the path's)";
+    std::ostringstream err;
+    err << "u range (u_min, u_max) must satisfy 0 <= u_min < u_max <= 1, or both be NaN for "
+           "the path's (got ["
+        << u_min << ", " << u_max << "])";
+    problem = err.str();
   } else {
     return true;
   }
-  if (why != nullptr) *why = err.str();
+  if (why != nullptr) *why = problem;
   return false;
 }
 

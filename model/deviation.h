@@ -8,7 +8,7 @@
 //
 // The motion between two consecutive poses i -> i+1 ("a move", s in [0, 1]):
 //  - with a machine, as DeviationOptions::interpolation says
-//    (model/interpolation.h, DESIGN.md "as the tool actually moves"): the
+//    (model/interpolation.h, docs/ARCHITECTURE.md "Interpolation models"): the
 //    joints X, Y, Z, A, C linear, pose(s) = ToWorkpiece((1 - s) J_i +
 //    s J_i+1), or TCP, the tip linear in W and A, C linear in the joints,
 //    J from Machine::AssignJoints;

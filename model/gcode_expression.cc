@@ -4,10 +4,11 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "model/units.h"
+
 namespace tpopt {
 namespace {
 
-constexpr double kDegToRad = M_PI / 180.0;
 // Numbered parameters above this are LinuxCNC's persistent and system ones
 // (work offsets, tool data, the current position): machine state.
 constexpr int kLastUserParameter = 5000;

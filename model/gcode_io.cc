@@ -16,12 +16,11 @@
 #include "model/atomic_file.h"
 #include "model/axis_metrics.h"
 #include "model/gcode_expression.h"
+#include "model/invalid_field.h"
+#include "model/units.h"
 
 namespace tpopt {
 namespace {
-
-constexpr double kRadToDeg = 180.0 / M_PI;
-constexpr double kMmPerInch = 25.4;
 
 bool IsBlank(const std::string& line) {
   for (char c : line) {
@@ -57,8 +56,17 @@ std::string Header(const ToolPath& path, const GcodeOptions& o, const Machine& m
 
 }  // namespace
 
+bool GcodeOptions::IsValid(std::string* why) const {
+  if (std::isfinite(default_feed_mm_per_min) && default_feed_mm_per_min > 0) return true;
+  if (why != nullptr) {
+    *why = InvalidField("--feed", default_feed_mm_per_min, "finite and > 0 mm/min");
+  }
+  return false;
+}
+
 Status FormatGcode(const ToolPath& path, const Machine& machine, const GcodeOptions& o,
                    std::string* program) {
+  if (std::string why; !o.IsValid(&why)) return Status::Error(why);
   std::vector<JointVector> joints;
   Status s = machine.AssignJoints(path, &joints);
   if (!s.ok()) return s;
@@ -131,6 +139,7 @@ std::string FeedWord(double f) {
 Status FormatGcodeProgram(const ToolPath& input, const ToolPath& output, const Machine& machine,
                           const GcodeOptions& o, std::string* text) {
   CHECK(output.program != nullptr && output.program->format == ProgramFormat::kGcode);
+  if (std::string why; !o.IsValid(&why)) return Status::Error(why);
   const Program& program = *output.program;
   std::vector<ProgramItem> items;
   Status s = SpliceProgram(program, input, output, &items);

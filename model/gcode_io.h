@@ -1,6 +1,6 @@
 // G-code in the LinuxCNC dialect, out and in.
 //
-// Styles (DESIGN.md):
+// Styles (docs/ARCHITECTURE.md, "Interpolation models"):
 //  - tcp:   X Y Z are the tool tip in the workpiece frame W, A C the rotary
 //           joints; the controller's tool-centre-point mode does the rest
 //           (LinuxCNC M428 in the xyzac-trt sample, Siemens TRAORI,
@@ -35,7 +35,12 @@ struct GcodeOptions {
   // "M428" to switch LinuxCNC's xyzac-trt sample to TCP; and after the last.
   std::string preamble;
   std::string postamble;
+  // Feed of the moves whose pose has none, and the feed the planned segment
+  // times of G93 assume there, mm/min. Finite and > 0.
   double default_feed_mm_per_min = 1000.0;
+
+  // False, with `why` naming the field and the value, for a bad value.
+  bool IsValid(std::string* why) const;
 };
 
 // The program text. Joints come from Machine::AssignJoints (one branch,

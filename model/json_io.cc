@@ -7,13 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "model/json_fields.h"
+#include "model/units.h"
 
 namespace tpopt {
 namespace {
 
 using nlohmann::json;
-
-constexpr double kDegToRad = M_PI / 180.0;
 
 // An array of numbers at j[key].
 Status NumbersAt(const json& j, const std::string& key, const std::string& what,

@@ -1,4 +1,4 @@
-// Readers of the surface and machine JSON files (DESIGN.md, "File formats").
+// Readers of the surface and machine JSON files (docs/ARCHITECTURE.md, "File formats").
 // Every error names the file, and the key, index and value at fault.
 #ifndef TPOPT_MODEL_JSON_IO_H_
 #define TPOPT_MODEL_JSON_IO_H_

@@ -5,14 +5,14 @@
 #include <sstream>
 #include <vector>
 
+#include "model/invalid_field.h"
+
 namespace tpopt {
 
 bool LinkMoveOptions::IsValid(std::string* why) const {
   if (feed_ratio == 0 || (std::isfinite(feed_ratio) && feed_ratio > 1)) return true;
   if (why != nullptr) {
-    std::ostringstream err;
-    err << "link feed ratio " << feed_ratio << " must be 0 (no links) or > 1";
-    *why = err.str();
+    *why = InvalidField("--link_feed_ratio", feed_ratio, "0 (no links) or finite and > 1");
   }
   return false;
 }

@@ -9,10 +9,11 @@
 #include <sstream>
 #include <vector>
 
+#include "model/units.h"
+
 namespace tpopt {
 namespace {
 
-constexpr double kDegToRad = M_PI / 180.0;
 constexpr char kKins[] = "xyzac-trt-kins";
 
 struct Entry {

@@ -7,11 +7,12 @@
 
 #include <glog/logging.h>
 
+#include "model/units.h"
+
 namespace tpopt {
 namespace {
 
 constexpr double kPi = M_PI;
-constexpr double kRadToDeg = 180.0 / M_PI;
 
 // Wraps an angle to (-pi, pi].
 double WrapPi(double angle_rad) {
@@ -258,7 +259,7 @@ Status Machine::CheckTravel(const ToolPath& path, const std::vector<JointVector>
       const AxisLimits& travel = limits[a];
       if (travel.InTravel(joints[i][a])) continue;
       // Rotary joints are radians inside; the machine file gives degrees.
-      const double scale = a >= kA ? 180.0 / M_PI : 1.0;
+      const double scale = a >= kA ? kRadToDeg : 1.0;
       std::ostringstream err;
       err << "pose " << i << " (line " << path.poses[i].source_line << "): " << kAxisNames[a]
           << " = " << joints[i][a] * scale << " is outside the travel [" << travel.min * scale

@@ -1,6 +1,6 @@
 // A/C table-table machine (LinuxCNC xyzac-trt-kins) with its axis limits.
 //
-// Joint -> workpiece (DESIGN.md), with dz' = z_offset + tool_length:
+// Joint -> workpiece (docs/ARCHITECTURE.md, "Kinematics"), with dz' = z_offset + tool_length:
 //   x =  cC(X-xr) + sC cA(Y-dy-yr) + sC sA(Z-dz'-zr) + sC dy + xr
 //   y = -sC(X-xr) + cC cA(Y-dy-yr) + cC sA(Z-dz'-zr) + cC dy + yr
 //   z = -sA(Y-dy-yr) + cA(Z-dz'-zr) + dz' + zr

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "model/invalid_field.h"
 #include "model/json_io.h"
 #include "model/surface_projection.h"
 
@@ -44,13 +45,12 @@ bool GuidePlacement::IsValid(std::string* why) const {
 bool PencilOptions::IsValid(std::string* why) const {
   std::string problem;
   if (!(ball_radius_mm > 0 && Finite(ball_radius_mm))) {
-    problem = Describe("ball radius", ball_radius_mm, "mm must be > 0");
-  }
-  if (!(feed_mm_per_min > 0 && Finite(feed_mm_per_min))) {
-    problem = Describe("feed", feed_mm_per_min, "mm/min must be > 0");
-  }
-  if (!(interpolation_period_s > 0 && Finite(interpolation_period_s))) {
-    problem = Describe("interpolation period", interpolation_period_s, "s must be > 0");
+    problem = InvalidField("--ball_radius", ball_radius_mm, "finite and > 0 mm");
+  } else if (!(feed_mm_per_min > 0 && Finite(feed_mm_per_min))) {
+    problem = InvalidField("--feed", feed_mm_per_min, "finite and > 0 mm/min");
+  } else if (!(interpolation_period_s > 0 && Finite(interpolation_period_s))) {
+    problem = InvalidField("--interpolation_period_ms", interpolation_period_s * 1e3,
+                           "finite and > 0 ms");
   }
   if (why) *why = problem;
   return problem.empty();

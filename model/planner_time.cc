@@ -5,14 +5,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "model/axis_metrics.h"
+#include "model/invalid_field.h"
+#include "model/units.h"
 
 namespace tpopt {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // What a speed change from v1 to v2 at tangential acceleration a costs over
@@ -29,18 +29,14 @@ double RampCost(double v1, double v2, double a) {
 }  // namespace
 
 bool PlannerOptions::IsValid(std::string* why) const {
-  std::ostringstream err;
+  std::string problem;
   if (!(blend_acceleration_fraction > 0 && blend_acceleration_fraction <= 1)) {
-    err << "planner blend acceleration fraction " << blend_acceleration_fraction
-        << " must be in (0, 1]";
-  } else if (!(default_feed_mm_per_min > 0) ||
-             !std::isfinite(default_feed_mm_per_min)) {
-    err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
-  } else {
-    return true;
+    problem = InvalidField("blend_acceleration_fraction", blend_acceleration_fraction, "in (0, 1]");
+  } else if (!(default_feed_mm_per_min > 0) || !std::isfinite(default_feed_mm_per_min)) {
+    problem = InvalidField("--feed", default_feed_mm_per_min, "finite and > 0 mm/min");
   }
-  if (why != nullptr) *why = err.str();
-  return false;
+  if (why != nullptr) *why = problem;
+  return problem.empty();
 }
 
 PlannerMove PlanMove(const Machine& machine, const ToolPath& path,

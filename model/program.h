@@ -1,6 +1,6 @@
 // The source program a tool path was read from, block for block, so that a
 // written program is the user's program with only its smoothed cutting moves
-// changed (DESIGN.md, "A program that comes in goes out as the same program").
+// changed (docs/ARCHITECTURE.md, "File formats").
 //
 // A reader (G-code, APT) keeps every block of its input in order. A block is
 // either written back as it was (comments, spindle, coolant, tool changes,

@@ -7,12 +7,12 @@
 #include <random>
 #include <sstream>
 
+#include "model/invalid_field.h"
 #include "model/path_generator.h"
+#include "model/units.h"
 
 namespace tpopt {
 namespace {
-
-constexpr double kDegToRad = M_PI / 180.0;
 
 class Draw {
  public:
@@ -186,17 +186,17 @@ std::string FitNote(const Machine& machine, const RandomCase& c) {
 }  // namespace
 
 bool RandomCaseOptions::IsValid(std::string* why) const {
-  std::ostringstream err;
+  std::string problem;
   if (poses < 4) {
-    err << "poses " << poses << " must be >= 4";
+    problem = InvalidField("poses", poses, ">= 4");
   } else if (!(near_pole_fraction >= 0 && near_pole_fraction <= 1)) {
-    err << "near-pole fraction " << near_pole_fraction << " must be in [0, 1]";
+    problem = InvalidField("near_pole_fraction", near_pole_fraction, "in [0, 1]");
   } else if (!(std::isfinite(feed_mm_per_min) && feed_mm_per_min > 0)) {
-    err << "feed " << feed_mm_per_min << " mm/min must be > 0";
+    problem = InvalidField("feed_mm_per_min", feed_mm_per_min, "finite and > 0");
   } else {
     return true;
   }
-  if (why != nullptr) *why = err.str();
+  if (why != nullptr) *why = problem;
   return false;
 }
 

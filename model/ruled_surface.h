@@ -2,7 +2,7 @@
 //
 // C1 is rail 0 (where the tool tip runs), C2 rail 1. The normal is
 // N = r_u x r_v, flipped so that it points to the side the cutter lies on
-// (DESIGN.md: `cutter_side`).
+// (docs/ARCHITECTURE.md, "Ruled surface").
 #ifndef TPOPT_MODEL_RULED_SURFACE_H_
 #define TPOPT_MODEL_RULED_SURFACE_H_
 

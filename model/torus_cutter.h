@@ -3,8 +3,8 @@
 // In the tool frame the corner is a circle of radius R0 = R - r (the
 // "centre circle") at height r above the tip, swept by a ball of radius r;
 // above the centre circle the flank is the cylinder of radius R. The tip is
-// the centre of the end face (DESIGN.md), so the centre circle's centre, the
-// "tool centre" c, is tip + r a.
+// the centre of the end face (docs/ARCHITECTURE.md, "Frames"), so the centre
+// circle's centre, the "tool centre" c, is tip + r a.
 //
 // The solid is the set of points within r of the half-infinite solid
 // cylinder D = {radius <= R0, height >= 0} around c: convex, so the

@@ -5,6 +5,8 @@
 #include <limits>
 #include <sstream>
 
+#include "model/invalid_field.h"
+
 namespace tpopt {
 namespace {
 
@@ -101,7 +103,7 @@ Blossoms ComputeBlossoms(const WindowFit& w) {
 
 bool LocalFitOptions::IsValid(std::string* why) const {
   if (!(chord_height_mm >= 0.0) || !std::isfinite(chord_height_mm)) {
-    if (why) *why = "chord_height_mm = " + std::to_string(chord_height_mm) + " must be >= 0";
+    if (why) *why = InvalidField("--fit_chord_height_mm", chord_height_mm, "finite and >= 0");
     return false;
   }
   return true;

@@ -21,7 +21,7 @@
 // ("remove both sides, keep the middle"). The tangents at P1 and P2 are not
 // conditions of the system, so kept spans of consecutive windows meet with
 // position continuity only; their tangent mismatch is measured, not assumed
-// (benchmarks/parametrization_table.cc).
+// (benchmarks/parametrization_benchmark.cc).
 //
 // The seed's eqs. (7)-(8) are lost in the text we have; they are the
 // circle through the two points whose sagitta (chord height) is delta:

@@ -6,6 +6,7 @@
 #include <Eigen/Sparse>
 
 #include "model/bspline_basis.h"
+#include "model/invalid_field.h"
 #include <Eigen/SparseCholesky>
 
 namespace tpopt {
@@ -113,7 +114,7 @@ Status SolveForCount(const std::vector<Eigen::Vector3d>& points, const std::vect
 
 bool LeastSquaresFitOptions::IsValid(std::string* why) const {
   if (tolerance_mm > 0 && std::isfinite(tolerance_mm)) return true;
-  if (why) *why = "least-squares tolerance " + std::to_string(tolerance_mm) + " mm must be > 0";
+  if (why) *why = InvalidField("tolerance_mm", tolerance_mm, "finite and > 0");
   return false;
 }
 

@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 
 #include <ceres/version.h>
 #include <glog/logging.h>
 
 #include "model/axis_metrics.h"
+#include "model/invalid_field.h"
 #include "model/rail_projection.h"
 #include "solver/coarse_to_fine.h"
 #include "solver/axis_limit_cost.h"
@@ -314,52 +316,57 @@ bool ClampToBand(const ToleranceBandCost::Band& band, ToolPose* pose) {
 }  // namespace
 
 bool HighAccuracyOptions::IsValid(std::string* why) const {
-  std::ostringstream err;
-  const double weights[] = {w_deviation, w_second,     w_third, w_tip_second,
-                            w_tip_third, w_limits,     w_tip_height, w_walls};
-  if (!(tolerance_mm > 0) || !std::isfinite(tolerance_mm)) {
-    err << "tolerance " << tolerance_mm << " mm must be > 0";
-  } else if (!(overcut_factor >= 1) || !std::isfinite(overcut_factor)) {
-    err << "overcut factor " << overcut_factor << " must be >= 1";
-  } else if (std::any_of(std::begin(weights), std::end(weights),
-                         [](double w) { return !(w >= 0) || !std::isfinite(w); })) {
-    err << "every weight must be finite and >= 0";
-  } else if (!(axis_cone_deg > 0 && axis_cone_deg <= 90)) {
-    err << "axis cone " << axis_cone_deg << " deg must be in (0, 90]";
-  } else if (!(travel_margin_mm > 0) || !std::isfinite(travel_margin_mm)) {
-    err << "travel margin " << travel_margin_mm << " mm must be > 0";
-  } else if (!(limit_margin > 0 && limit_margin <= 1)) {
-    err << "limit margin " << limit_margin << " must be in (0, 1]";
-  } else if (std::any_of(guard_distances_mm.begin(), guard_distances_mm.end(),
-                         [](double d) { return !(d > 0) || !std::isfinite(d); })) {
-    err << "guard distances must be > 0 mm";
-  } else if (!(between_min_move_mm >= 0) || !std::isfinite(between_min_move_mm)) {
-    err << "between_min_move_mm " << between_min_move_mm << " must be >= 0";
-  } else if (ruling_samples < 2 || between_samples < 0) {
-    err << "ruling samples " << ruling_samples << " must be >= 2 and between samples "
-        << between_samples << " >= 0";
-  } else if (!(angle_tolerance_deg > 0) || !(w_band > 0) || !(slide_weight >= 0)) {
-    err << "surface-free band: angle tolerance " << angle_tolerance_deg << " deg and band weight "
-        << w_band << " must be > 0, slide weight " << slide_weight << " >= 0";
-  } else if (!(default_feed_mm_per_min > 0)) {
-    err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
-  } else if (window_poses != 0 && window_poses < 100) {
-    err << "window poses " << window_poses << " must be 0 (no windows) or >= 100";
-  } else if (pole_window_path_poses < 0) {
-    err << "pole window path poses " << pole_window_path_poses << " must be >= 0";
-  } else if (coarse_poses < 0 || refine_iterations < 0) {
-    err << "coarse poses " << coarse_poses << " and refine iterations " << refine_iterations
-        << " must be >= 0";
-  } else if (!(pole_passage_deg >= 0 && pole_passage_deg < 90)) {
-    err << "pole passage angle " << pole_passage_deg << " deg must be in [0, 90)";
-  } else if (max_iterations < 0 || num_threads < 1) {
-    err << "max iterations " << max_iterations << " must be >= 0 and threads " << num_threads
-        << " >= 1";
-  } else {
-    return true;
+  std::string problem;
+  auto require = [&problem](bool ok, const std::string& message) {
+    if (problem.empty() && !ok) problem = message;
+  };
+  auto finite_at_least = [](double v, double lo) { return v >= lo && std::isfinite(v); };
+  require(tolerance_mm > 0 && std::isfinite(tolerance_mm),
+          InvalidField("--tolerance_mm", tolerance_mm, "finite and > 0"));
+  require(finite_at_least(overcut_factor, 1),
+          InvalidField("--overcut_factor", overcut_factor, "finite and >= 1"));
+  const std::pair<const char*, double> weights[] = {
+      {"--w_deviation", w_deviation},   {"--w_second", w_second},
+      {"--w_third", w_third},           {"--w_tip_second", w_tip_second},
+      {"--w_tip_third", w_tip_third},   {"--w_limits", w_limits},
+      {"--w_tip_height", w_tip_height}, {"--w_walls", w_walls}};
+  for (const auto& [flag, w] : weights) {
+    require(finite_at_least(w, 0), InvalidField(flag, w, "finite and >= 0"));
   }
-  if (why != nullptr) *why = err.str();
-  return false;
+  require(axis_cone_deg > 0 && axis_cone_deg <= 90,
+          InvalidField("--axis_cone_deg", axis_cone_deg, "in (0, 90]"));
+  require(travel_margin_mm > 0 && std::isfinite(travel_margin_mm),
+          InvalidField("travel_margin_mm", travel_margin_mm, "finite and > 0"));
+  require(limit_margin > 0 && limit_margin <= 1,
+          InvalidField("--limit_margin", limit_margin, "in (0, 1]"));
+  for (size_t k = 0; k < guard_distances_mm.size(); ++k) {
+    const double d = guard_distances_mm[k];
+    require(d > 0 && std::isfinite(d),
+            InvalidField("guard_distances_mm[" + std::to_string(k) + "]", d, "finite and > 0"));
+  }
+  require(finite_at_least(between_min_move_mm, 0),
+          InvalidField("between_min_move_mm", between_min_move_mm, "finite and >= 0"));
+  require(ruling_samples >= 2, InvalidField("--ruling_samples", ruling_samples, ">= 2"));
+  require(between_samples >= 0, InvalidField("--between_samples", between_samples, ">= 0"));
+  require(angle_tolerance_deg > 0,
+          InvalidField("--angle_tolerance_deg", angle_tolerance_deg, "> 0"));
+  require(w_band > 0, InvalidField("w_band", w_band, "> 0"));
+  require(slide_weight >= 0, InvalidField("slide_weight", slide_weight, ">= 0"));
+  require(default_feed_mm_per_min > 0,
+          InvalidField("--feed", default_feed_mm_per_min, "> 0 mm/min"));
+  require(window_poses == 0 || window_poses >= 100,
+          InvalidField("--window_poses", window_poses, "0 (no windows) or >= 100"));
+  require(pole_window_path_poses >= 0,
+          InvalidField("--pole_window_path_poses", pole_window_path_poses, ">= 0"));
+  require(coarse_poses >= 0, InvalidField("--coarse_poses", coarse_poses, ">= 0"));
+  require(refine_iterations >= 0,
+          InvalidField("--refine_iterations", refine_iterations, ">= 0"));
+  require(pole_passage_deg >= 0 && pole_passage_deg < 90,
+          InvalidField("--pole_passage_deg", pole_passage_deg, "in [0, 90)"));
+  require(max_iterations >= 0, InvalidField("--max_iterations", max_iterations, ">= 0"));
+  require(num_threads >= 1, InvalidField("--num_threads", num_threads, ">= 1"));
+  if (why != nullptr) *why = problem;
+  return problem.empty();
 }
 
 HighAccuracyOptions HighAccuracyOptions::SurfaceFree() {

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "model/invalid_field.h"
+
 namespace tpopt {
 namespace {
 
@@ -51,15 +53,15 @@ ToolPose Between(const ToolPose& from, const ToolPose& to, const Eigen::Vector3d
 }  // namespace
 
 bool CurveOutputOptions::IsValid(std::string* why) const {
-  std::ostringstream problem;
   if (!fit.IsValid(why)) return false;
+  std::string problem;
   if (!(sample_step_mm > 0) || !std::isfinite(sample_step_mm)) {
-    problem << "curve sample step " << sample_step_mm << " mm must be > 0";
+    problem = InvalidField("--curve_step_mm", sample_step_mm, "finite and > 0");
   } else if (!(corner_angle_deg > 0 && corner_angle_deg <= 180)) {
-    problem << "corner angle " << corner_angle_deg << " deg must be in (0, 180]";
+    problem = InvalidField("corner_angle_deg", corner_angle_deg, "in (0, 180]");
   }
-  if (why) *why = problem.str();
-  return problem.str().empty();
+  if (why) *why = problem;
+  return problem.empty();
 }
 
 void AppendFittedRun(const std::vector<ToolPose>& poses, const std::vector<CubicSpan>& spans,

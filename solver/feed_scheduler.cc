@@ -7,6 +7,7 @@
 #include <glog/logging.h>
 
 #include "model/axis_metrics.h"
+#include "model/invalid_field.h"
 #include "model/planner_time.h"
 
 namespace tpopt {
@@ -197,26 +198,24 @@ void KeepRunTimes(const Machine& machine, const std::vector<JointVector>& joints
 }  // namespace
 
 bool FeedScheduleOptions::IsValid(std::string* why) const {
-  std::ostringstream err;
-  if (!(margin > 0 && margin < 1)) {
-    err << "feed margin " << margin << " must be in (0, 1)";
-  } else if (!(max_feed_step > 0) || !std::isfinite(max_feed_step)) {
-    err << "feed step " << max_feed_step << " must be > 0";
-  } else if (!(default_feed_mm_per_min > 0) || !std::isfinite(default_feed_mm_per_min)) {
-    err << "default feed " << default_feed_mm_per_min << " mm/min must be > 0";
-  } else if (max_passes < 1) {
-    err << "feed passes " << max_passes << " must be >= 1";
-  } else if (!(max_feed_mm_per_min > 0)) {
-    err << "max feed " << max_feed_mm_per_min << " mm/min must be > 0";
-  } else if (!(max_feed_factor >= 1) || !std::isfinite(max_feed_factor)) {
-    err << "max feed factor " << max_feed_factor << " must be >= 1";
-  } else if (!(keep_run_time_window_mm > 0)) {
-    err << "keep-run-time window " << keep_run_time_window_mm << " mm must be > 0";
-  } else {
-    return true;
-  }
-  if (why != nullptr) *why = err.str();
-  return false;
+  std::string problem;
+  auto require = [&problem](bool ok, const std::string& message) {
+    if (problem.empty() && !ok) problem = message;
+  };
+  require(margin > 0 && margin < 1, InvalidField("margin", margin, "in (0, 1)"));
+  require(max_feed_step > 0 && std::isfinite(max_feed_step),
+          InvalidField("--max_feed_step", max_feed_step, "finite and > 0"));
+  require(default_feed_mm_per_min > 0 && std::isfinite(default_feed_mm_per_min),
+          InvalidField("--feed", default_feed_mm_per_min, "finite and > 0 mm/min"));
+  require(max_passes >= 1, InvalidField("max_passes", max_passes, ">= 1"));
+  require(max_feed_mm_per_min > 0,
+          InvalidField("--max_feed_mm_per_min", max_feed_mm_per_min, "> 0"));
+  require(max_feed_factor >= 1 && std::isfinite(max_feed_factor),
+          InvalidField("--max_feed_factor", max_feed_factor, "finite and >= 1"));
+  require(keep_run_time_window_mm > 0,
+          InvalidField("--keep_run_time_window_mm", keep_run_time_window_mm, "> 0"));
+  if (why != nullptr) *why = problem;
+  return problem.empty();
 }
 
 Status ScheduleFeed(const Machine& machine, const std::vector<JointVector>& joints,

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "model/invalid_field.h"
 #include "solver/pose_spline.h"
 
 namespace tpopt {
@@ -53,11 +54,7 @@ Status ResampleRun(const ToolPath& in, const std::vector<JointVector>& joints, s
 
 bool ResampleOptions::IsValid(std::string* why) const {
   if (step_mm > 0 && std::isfinite(step_mm)) return true;
-  if (why != nullptr) {
-    std::ostringstream err;
-    err << "resample step " << step_mm << " mm must be > 0";
-    *why = err.str();
-  }
+  if (why != nullptr) *why = InvalidField("--resample_step_mm", step_mm, "finite and > 0");
   return false;
 }
 

@@ -5,15 +5,9 @@
 
 #include <glog/logging.h>
 
-namespace tpopt {
+#include "model/segment_distance.h"
 
-double DistanceToSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                         const Eigen::Vector3d& q) {
-  const Eigen::Vector3d ab = b - a;
-  const double length2 = ab.squaredNorm();
-  const double t = length2 > 0 ? std::clamp((q - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - q).norm();
-}
+namespace tpopt {
 
 double DistanceToCurve(const std::function<Eigen::Vector3d(double)>& curve, double lo, double hi,
                        const Eigen::Vector3d& q) {
@@ -64,7 +58,7 @@ SpanErrors MeasureSpanErrors(const std::vector<Eigen::Vector3d>& points,
     for (int k = 1; k <= samples_per_span; ++k) {
       const Eigen::Vector3d q = ideal(i, double(k) / (samples_per_span + 1));
       errors.max_chord_error_mm =
-          std::max(errors.max_chord_error_mm, DistanceToSegment(points[i], points[i + 1], q));
+          std::max(errors.max_chord_error_mm, DistanceToSegment(q, points[i], points[i + 1]));
       const double fit = DistanceToSpan(spans[i], q);
       if (fit > errors.max_fit_error_mm) {
         errors.max_fit_error_mm = fit;

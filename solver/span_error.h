@@ -13,10 +13,6 @@
 
 namespace tpopt {
 
-// Distance from q to the segment [a, b], mm.
-double DistanceToSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                         const Eigen::Vector3d& q);
-
 // Distance from q to curve(t), t in [lo, hi], mm: the best of 33 samples,
 // refined by a golden-section search on the bracket around it (the
 // distance is unimodal there for the short pieces of a tool path).

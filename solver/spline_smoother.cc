@@ -7,7 +7,9 @@
 
 #include <glog/logging.h>
 
+#include "model/invalid_field.h"
 #include "model/rail_projection.h"
+#include "model/units.h"
 #include "solver/overhang.h"
 #include "solver/pole_crossing.h"
 #include "solver/smoothing_spline.h"
@@ -15,7 +17,6 @@
 namespace tpopt {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / M_PI;
 constexpr double kMinStepMm = 1e-6;
 // A pole passage this close to its plane through +Z already crosses the
 // pole: a nanoradian, far above round-off, far below any CAM error.
@@ -125,24 +126,23 @@ class PinnedFit {
 }  // namespace
 
 bool SplineSmootherOptions::IsValid(std::string* why) const {
-  std::ostringstream err;
-  if (!(zone_factor > 1) || !std::isfinite(zone_factor)) {
-    err << "zone factor " << zone_factor << " must be > 1";
-  } else if (zone_padding < 0) {
-    err << "zone padding " << zone_padding << " must be >= 0";
-  } else if (!(angle_tolerance_deg > 0) || !std::isfinite(angle_tolerance_deg)) {
-    err << "angle tolerance " << angle_tolerance_deg << " deg must be > 0";
-  } else if (!(zone_weight > 0 && zone_weight <= 1)) {
-    err << "zone weight " << zone_weight << " must be in (0, 1]";
-  } else if (!(pole_passage_deg >= 0 && pole_passage_deg < 90)) {
-    err << "pole passage angle " << pole_passage_deg << " deg must be in [0, 90)";
-  } else if (!(pole_crossing_deg >= 0) || !std::isfinite(pole_crossing_deg)) {
-    err << "pole crossing bound " << pole_crossing_deg << " deg must be >= 0";
-  } else {
-    return true;
-  }
-  if (why != nullptr) *why = err.str();
-  return false;
+  std::string problem;
+  auto require = [&problem](bool ok, const std::string& message) {
+    if (problem.empty() && !ok) problem = message;
+  };
+  require(zone_factor > 1 && std::isfinite(zone_factor),
+          InvalidField("--zone_factor", zone_factor, "finite and > 1"));
+  require(zone_padding >= 0, InvalidField("--zone_padding", zone_padding, ">= 0"));
+  require(angle_tolerance_deg > 0 && std::isfinite(angle_tolerance_deg),
+          InvalidField("--spline_tolerance_deg", angle_tolerance_deg, "finite and > 0"));
+  require(zone_weight > 0 && zone_weight <= 1,
+          InvalidField("zone_weight", zone_weight, "in (0, 1]"));
+  require(pole_passage_deg >= 0 && pole_passage_deg < 90,
+          InvalidField("--pole_passage_deg", pole_passage_deg, "in [0, 90)"));
+  require(pole_crossing_deg >= 0 && std::isfinite(pole_crossing_deg),
+          InvalidField("--pole_crossing_deg", pole_crossing_deg, "finite and >= 0"));
+  if (why != nullptr) *why = problem;
+  return problem.empty();
 }
 
 namespace {

@@ -2,23 +2,28 @@
 
 #include <sstream>
 
+#include "model/invalid_field.h"
+
 namespace tpopt {
 
 bool StripPathOptions::IsValid(std::string* why) const {
-  std::ostringstream err;
   if (!posture.IsValid(why)) return false;
+  std::string problem;
   if (poses < 3 || poses > 100000) {
-    err << "poses = " << poses << " must be in [3, 100000]";
+    problem = InvalidField("--cc_points", poses, "in [3, 100000]");
   } else if (!(path_v >= 0.0 && path_v <= 1.0)) {
-    err << "path v = " << path_v << " must be in [0, 1]";
+    problem = InvalidField("--path_v", path_v, "in [0, 1]");
   } else if (!(u_begin >= 0.0 && u_begin < u_end && u_end <= 1.0)) {
-    err << "u range [" << u_begin << ", " << u_end << "] must satisfy 0 <= begin < end <= 1";
+    std::ostringstream range;
+    range << "[" << u_begin << ", " << u_end << "]";
+    problem = "u range (u_begin, u_end) must satisfy 0 <= u_begin < u_end <= 1 (got " +
+              range.str() + ")";
   } else if (samples_per_side < 10 || samples_per_side > 10000) {
-    err << "samples per side = " << samples_per_side << " must be in [10, 10000]";
+    problem = InvalidField("--section_samples", samples_per_side, "in [10, 10000]");
   } else {
     return true;
   }
-  if (why != nullptr) *why = err.str();
+  if (why != nullptr) *why = problem;
   return false;
 }
 

@@ -5,6 +5,9 @@
 #include <sstream>
 #include <vector>
 
+#include "model/invalid_field.h"
+#include "model/units.h"
+
 namespace tpopt {
 namespace {
 
@@ -149,27 +152,32 @@ Candidate SearchLeadTilt(const PostureOptions& options, const Posture* previous,
 }  // namespace
 
 bool PostureOptions::IsValid(std::string* why) const {
-  std::ostringstream err;
-  const double deg = 180.0 / M_PI;
-  if (!(tolerance_mm > 0.0) || tolerance_mm > 10.0) {
-    err << "tolerance " << tolerance_mm << " mm must be in (0, 10]";
-  } else if (!(min_lead_rad > 0.0) || !(max_lead_rad >= min_lead_rad) ||
-             max_lead_rad >= M_PI / 2) {
-    err << "lead range [" << min_lead_rad * deg << ", " << max_lead_rad * deg
-        << "] deg must satisfy 0 < min <= max < 90";
-  } else if (!(sturz_lead_rad >= min_lead_rad && sturz_lead_rad <= max_lead_rad)) {
-    err << "Sturz lead " << sturz_lead_rad * deg << " deg must lie in the lead range ["
-        << min_lead_rad * deg << ", " << max_lead_rad * deg << "]";
-  } else if (!(max_tilt_rad >= 0.0) || max_tilt_rad >= M_PI / 2) {
-    err << "max tilt " << max_tilt_rad * deg << " deg must be in [0, 90)";
-  } else if (!(gouge_tolerance_mm >= 0.0) || !(angle_resolution_rad > 0.0) ||
-             !(continuity_tie >= 0.0 && continuity_tie < 1.0)) {
-    err << "gouge tolerance, angle resolution and continuity tie must be positive (tie < 1)";
-  } else {
-    return true;
-  }
-  if (why != nullptr) *why = err.str();
-  return false;
+  std::string problem;
+  auto require = [&problem](bool ok, const std::string& message) {
+    if (problem.empty() && !ok) problem = message;
+  };
+  const double deg = kRadToDeg;
+  std::ostringstream lead_range;
+  lead_range << "[" << min_lead_rad * deg << ", " << max_lead_rad * deg << "]";
+  require(tolerance_mm > 0.0 && tolerance_mm <= 10.0,
+          InvalidField("--tolerance_mm", tolerance_mm, "in (0, 10]"));
+  require(min_lead_rad > 0.0, InvalidField("--min_lead_deg", min_lead_rad * deg, "> 0"));
+  require(max_lead_rad >= min_lead_rad && max_lead_rad < M_PI / 2,
+          InvalidField("--max_lead_deg", max_lead_rad * deg,
+                       ">= --min_lead_deg and < 90"));
+  require(sturz_lead_rad >= min_lead_rad && sturz_lead_rad <= max_lead_rad,
+          InvalidField("--lead_deg", sturz_lead_rad * deg,
+                       "in [--min_lead_deg, --max_lead_deg] = " + lead_range.str()));
+  require(max_tilt_rad >= 0.0 && max_tilt_rad < M_PI / 2,
+          InvalidField("--max_tilt_deg", max_tilt_rad * deg, "in [0, 90)"));
+  require(gouge_tolerance_mm >= 0.0,
+          InvalidField("gouge_tolerance_mm", gouge_tolerance_mm, ">= 0"));
+  require(angle_resolution_rad > 0.0,
+          InvalidField("angle_resolution_rad", angle_resolution_rad, "> 0"));
+  require(continuity_tie >= 0.0 && continuity_tie < 1.0,
+          InvalidField("continuity_tie", continuity_tie, "in [0, 1)"));
+  if (why != nullptr) *why = problem;
+  return problem.empty();
 }
 
 PlacedTool PlaceTool(const TorusCutter& cutter, const CrossSection& section,

@@ -151,7 +151,7 @@ TEST_F(BadInputMatrixTest, CadSurfaceErrorsExitOneNamingTheFileAndFace) {
   // bad input naming the file.
   const auto r = Smooth(path, "--surface=" + good + " --ruling=w");
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("good.stp: ruling 'w' must be u or v"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("good.stp: --ruling must be u or v (got 'w')"), std::string::npos) << r.output;
 }
 
 TEST_F(BadInputMatrixTest, UnwritableOutputsExitOneAndLeaveNothing) {

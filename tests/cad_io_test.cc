@@ -405,7 +405,7 @@ TEST_F(CadIoTest, BadFilesNameTheFile) {
   }
   CadReadOptions bad;
   bad.ruling = "w";
-  EXPECT_NE(ReadError(good, bad).find("ruling 'w' must be u or v"),
+  EXPECT_NE(ReadError(good, bad).find("--ruling must be u or v (got 'w')"),
             std::string::npos);
 }
 

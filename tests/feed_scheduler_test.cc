@@ -362,11 +362,11 @@ TEST(FeedSchedulerTest, RejectsBadOptions) {
   o = FeedScheduleOptions();
   o.max_feed_mm_per_min = 0;
   EXPECT_FALSE(o.IsValid(&why));
-  EXPECT_NE(why.find("max feed 0"), std::string::npos);
+  EXPECT_NE(why.find("--max_feed_mm_per_min must be > 0 (got 0)"), std::string::npos);
   o = FeedScheduleOptions();
   o.keep_run_time_window_mm = 0;
   EXPECT_FALSE(o.IsValid(&why));
-  EXPECT_NE(why.find("window 0"), std::string::npos);
+  EXPECT_NE(why.find("--keep_run_time_window_mm must be > 0 (got 0)"), std::string::npos);
 }
 
 }  // namespace

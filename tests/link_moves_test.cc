@@ -79,7 +79,8 @@ TEST(LinkMovesTest, ValidatesTheRatio) {
     LinkMoveOptions o;
     o.feed_ratio = bad;
     EXPECT_FALSE(o.IsValid(&why)) << bad;
-    EXPECT_NE(why.find("link feed ratio"), std::string::npos) << why;
+    EXPECT_EQ(why.find("--link_feed_ratio must be 0 (no links) or finite and > 1 (got "), 0u)
+        << why;
   }
 }
 

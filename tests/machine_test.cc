@@ -40,7 +40,7 @@ TEST(KinematicsTest, ReferenceWorkpiecePointToJoints) {
   EXPECT_NEAR(j[kZ], 14.936729, 1e-6);
 }
 
-// The DESIGN.md joint -> workpiece formulas, written out literally, as an
+// The docs/ARCHITECTURE.md joint -> workpiece formulas, written out literally, as an
 // independent reference for the factored implementation.
 Eigen::Vector3d DesignFormula(const KinematicParams& k, const JointVector& j) {
   const double xr = k.rotary_pivot_mm.x(), yr = k.rotary_pivot_mm.y(),

@@ -1,0 +1,29 @@
+// The message of an options struct's IsValid: it names the field as the
+// flag that sets it (or as the field, where no flag does) and the value,
+// e.g. "--w_deviation must be finite and >= 0 (got -1)".
+#ifndef TPOPT_MODEL_INVALID_FIELD_H_
+#define TPOPT_MODEL_INVALID_FIELD_H_
+
+#include <sstream>
+#include <string>
+
+namespace tpopt {
+
+// "<field> must be <rule> (got <value>)"; a string value is quoted.
+template <typename T>
+std::string InvalidField(const std::string& field, const T& value,
+                         const std::string& rule) {
+  std::ostringstream out;
+  out << field << " must be " << rule << " (got " << value << ")";
+  return out.str();
+}
+
+inline std::string InvalidField(const std::string& field,
+                                const std::string& value,
+                                const std::string& rule) {
+  return field + " must be " + rule + " (got '" + value + "')";
+}
+
+}  // namespace tpopt
+
+#endif  // TPOPT_MODEL_INVALID_FIELD_H_
