@@ -3,7 +3,8 @@
 // mode, the initial guess in high-accuracy mode with a surface; without one
 // the input itself starts the solve); the Ceres solve; resampling; the
 // refusal of a result worse than its start or (with a surface) beyond the
-// tolerance, after tightening the solve; feed scheduling; metrics of the
+// tolerance, after tightening the solve; the runs made worse on peak
+// d2A/ds2 or d2C/ds2 put back as programmed; feed scheduling; metrics of the
 // output.
 #ifndef TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
 #define TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
@@ -76,9 +77,10 @@ struct SmoothingResult {
   // with a penalty of its own), and how many points that set held.
   int tolerance_rounds = 0;
   int tolerance_points = 0;
-  // Spline mode: runs put back as programmed because the spline made their
-  // peak d2A/ds2 or d2C/ds2 higher than the input's (the spline mode never
-  // returns a program worse on either).
+  // Runs put back as programmed because the method made their peak d2A/ds2
+  // or d2C/ds2 higher than the input's (neither mode returns a program
+  // worse on either), or, in high-accuracy mode with a surface, because a
+  // neighbour put back left the mix beyond the tolerance.
   int runs_kept_as_input = 0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;
