@@ -12,6 +12,7 @@
 #include "model/json_io.h"
 #include "model/linuxcnc_ini.h"
 #include "model/part_setup.h"
+#include "model/standing_moves.h"
 
 namespace tpopt {
 namespace {
@@ -262,6 +263,7 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
     }
   }
   if (s.ok()) MarkLinkMoves(links, &job->path);
+  if (s.ok()) MarkStandingMoves(&job->path);
   if (s.ok() && job->has_surface) {
     s = LoadRuledSurface(FLAGS_surface, &job->surface, &job->surface_cad);
   }

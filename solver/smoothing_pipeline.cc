@@ -253,9 +253,11 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   *failure = SmoothingFailure::kNone;
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
   const auto& poses = job.input->poses;
-  const bool cuts = std::any_of(poses.begin() + std::min<size_t>(1, poses.size()), poses.end(),
-                                [](const ToolPose& p) { return !IsPositioningMove(p); });
-  if (!cuts) {
+  const auto second = poses.begin() + std::min<size_t>(1, poses.size());
+  const bool feeds = std::any_of(second, poses.end(), [](const ToolPose& p) { return !p.rapid; });
+  const bool cuts =
+      std::any_of(second, poses.end(), [](const ToolPose& p) { return !IsPositioningMove(p); });
+  if (!feeds) {
     return Fail(SmoothingFailure::kBadInput,
                 "the path has no cutting move to smooth (" + std::to_string(poses.size()) +
                     " poses)",
@@ -282,6 +284,14 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   }
   if (s.ok()) s = WithinTravel(*job.machine, *job.input);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+  if (!cuts) {
+    // Every feed move is one to keep as programmed (held, such as a
+    // program of pure rotary moves, or a link): the program goes out as it
+    // came, with nothing smoothed.
+    result->output = *job.input;
+    result->output_at_input_feed = result->output_metrics = result->input_metrics;
+    return Status::Ok();
+  }
 
   const SplineSmootherOptions spline_options =
       high_accuracy ? ForHighAccuracyGuess(settings.spline) : settings.spline;
