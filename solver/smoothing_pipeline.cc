@@ -324,7 +324,8 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   if (!high_accuracy) {
     result->output = std::move(spline_path);
     std::vector<bool> back;
-    if (KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
+    if (settings.keep_runs_no_worse &&
+        KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
                         &result->output, &back)) {
       result->runs_kept_as_input = static_cast<int>(std::count(back.begin(), back.end(), true));
     }
@@ -387,8 +388,10 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
       }
       GrowActiveSet(out, beyond, &active);
     }
-    s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min,
-                              held_to_tolerance ? options.tolerance_mm : 0.0, evaluate, result);
+    if (settings.keep_runs_no_worse) {
+      s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min,
+                                held_to_tolerance ? options.tolerance_mm : 0.0, evaluate, result);
+    }
     if (!s.ok()) {
       return Fail(SmoothingFailure::kSolver,
                   "the smoothed path with runs kept as programmed does not fit the machine (" +

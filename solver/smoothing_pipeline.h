@@ -43,6 +43,10 @@ struct SmoothingSettings {
   // then refused (kSolver, nothing to write), unless this is set; then the
   // first solve is reported, not refused.
   bool accept_over_tolerance = false;
+  // Put back as programmed the cutting runs the method made worse on peak
+  // d2A/ds2 or d2C/ds2 (SmoothingResult::runs_kept_as_input), so that
+  // neither mode returns a program worse on either.
+  bool keep_runs_no_worse = true;
   // Judge the initial guess and the output on the grid of the input's
   // covered range (CoveredRangeU) instead of each path's own, so that a
   // smoothed path that retreats from the surface's ends is charged for what
