@@ -47,7 +47,8 @@ int RunEvaluate(const Invocation& invocation) {
   s = CheckOutputFolders({FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
   PathMetrics metrics;
-  if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job);
+  if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job, /*cutter_per_tool=*/true);
+  deviation_options.cutter_per_tool = job.cutter_per_tool;
   if (s.ok()) {
     ProgressDisplay progress(stderr, "tpopt evaluate", !FLAGS_quiet, FLAGS_progress_after_s);
     progress.SetStage("evaluating deviation and motion");
@@ -68,7 +69,8 @@ int RunEvaluate(const Invocation& invocation) {
   if (job.surface_cad) report["surface_cad"] = CadInfoJson(*job.surface_cad);
   report["machine"] = job.machine.name;
   report["cutter"] = {{"radius_mm", job.cutter.radius_mm},
-                      {"flute_length_mm", job.cutter.flute_length_mm}};
+                      {"flute_length_mm", job.cutter.flute_length_mm},
+                      {"per_tool", job.cutter_per_tool}};
   report["interpolation"] = InterpolationName(deviation_options.interpolation);
   report["poses_in"] = metrics.poses;
   report["poses_out"] = metrics.poses;

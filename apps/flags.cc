@@ -135,6 +135,9 @@ DEFINE_bool(insert_transitions, false, "spline: insert a transition pose in ever
 DEFINE_double(pole_crossing_deg, 4.0,
               "spline: a pole passage whose axes all lie within this angle of one plane through "
               "A = 0 is put on that plane, so A changes sign there with C held (0 = never).");
+DEFINE_bool(keep_runs_no_worse, true,
+            "smooth: put back as programmed every cutting run that smoothing made worse on peak "
+            "d2A/ds2 or d2C/ds2 (false: write what the method made).");
 DEFINE_bool(accept_over_tolerance, false,
             "smooth: with a surface, write a high_accuracy result even where it is farther from "
             "the surface than --tolerance_mm (by default it is refused, exit 3, nothing written).");

@@ -82,6 +82,7 @@ DECLARE_int32(zone_padding);
 DECLARE_bool(insert_transitions);
 DECLARE_bool(smooth_outside_zones);
 DECLARE_bool(accept_over_tolerance);
+DECLARE_bool(keep_runs_no_worse);
 DECLARE_double(link_feed_ratio);
 DECLARE_bool(schedule_feed);
 DECLARE_string(feed_mode);

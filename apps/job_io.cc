@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "apps/flags.h"
@@ -12,6 +13,7 @@
 #include "model/json_io.h"
 #include "model/linuxcnc_ini.h"
 #include "model/part_setup.h"
+#include "model/standing_moves.h"
 
 namespace tpopt {
 namespace {
@@ -203,28 +205,42 @@ Status LoadMachine(const std::string& path, Machine* machine) {
   return ReadMachineJson(path, machine);
 }
 
+namespace {
+
+// The first tool that cuts (a feed move with a sized tool) and the first
+// after it of another size (diameter or flute length), or null.
+std::pair<const ToolRecord*, const ToolRecord*> DifferingTools(const ToolPath& path) {
+  const ToolRecord* first = nullptr;
+  for (const ToolPose& p : path.poses) {
+    if (p.rapid || p.tool < 0 || !path.tools[p.tool].cutter) continue;
+    const ToolRecord& t = path.tools[p.tool];
+    if (first == nullptr) first = &t;
+    if (t.cutter->radius_mm != first->cutter->radius_mm ||
+        t.cutter->flute_length_mm != first->cutter->flute_length_mm) {
+      return {first, &t};
+    }
+  }
+  return {first, nullptr};
+}
+
+}  // namespace
+
 Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
-                     double flute_flag_mm, Cutter* cutter) {
-  // Deviation from a surface takes one cutter for the whole path: a
+                     double flute_flag_mm, bool cutter_per_tool, Cutter* cutter) {
+  // The smoothers judge a path against a surface with one cutter: a
   // program that cuts with tools of other sizes would be judged with the
-  // wrong one.
-  if (surface != nullptr && radius_flag_mm == 0.0) {
-    const ToolRecord* first = nullptr;
-    for (const ToolPose& p : path.poses) {
-      if (p.rapid || p.tool < 0 || !path.tools[p.tool].cutter) continue;
-      const ToolRecord& t = path.tools[p.tool];
-      if (first == nullptr) first = &t;
-      if (t.cutter->radius_mm != first->cutter->radius_mm ||
-          t.cutter->flute_length_mm != first->cutter->flute_length_mm) {
-        char buf[256];
-        std::snprintf(buf, sizeof(buf),
-                      "the program cuts with tool %d (line %d, D %g mm) and tool %d (line %d, D "
-                      "%g mm); deviation from a surface takes one cutter: evaluate each tool's "
-                      "moves on their own, or give --cutter_radius",
-                      first->number, first->source_line, 2 * first->cutter->radius_mm, t.number,
-                      t.source_line, 2 * t.cutter->radius_mm);
-        return Status::Error(buf);
-      }
+  // wrong one, unless each move takes its own (cutter_per_tool).
+  if (surface != nullptr && radius_flag_mm == 0.0 && !cutter_per_tool) {
+    const auto [first, other] = DifferingTools(path);
+    if (other != nullptr) {
+      char buf[256];
+      std::snprintf(buf, sizeof(buf),
+                    "the program cuts with tool %d (line %d, D %g mm) and tool %d (line %d, D "
+                    "%g mm); deviation from a surface takes one cutter here: `tpopt evaluate` "
+                    "judges each move with its own tool, or give --cutter_radius",
+                    first->number, first->source_line, 2 * first->cutter->radius_mm,
+                    other->number, other->source_line, 2 * other->cutter->radius_mm);
+      return Status::Error(buf);
     }
   }
   Cutter c;
@@ -246,7 +262,7 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
   return Status::Ok();
 }
 
-Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
+Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job, bool cutter_per_tool) {
   job->has_surface = !FLAGS_surface.empty();
   Status s = LoadMachine(FLAGS_machine, &job->machine);
   if (s.ok()) s = LoadToolPath(FLAGS_in, job->machine, quiet, &job->path);
@@ -262,6 +278,7 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
     }
   }
   if (s.ok()) MarkLinkMoves(links, &job->path);
+  if (s.ok()) MarkStandingMoves(&job->path);
   if (s.ok() && job->has_surface) {
     s = LoadRuledSurface(FLAGS_surface, &job->surface, &job->surface_cad);
   }
@@ -270,8 +287,10 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
     s = ReadControllerRun(FLAGS_cnc_summary, &*job->controller);
   }
   if (s.ok()) {
+    job->cutter_per_tool = cutter_per_tool && job->has_surface && FLAGS_cutter_radius == 0.0 &&
+                           FLAGS_flute_length == 0.0 && DifferingTools(job->path).second != nullptr;
     s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius, FLAGS_flute_length,
-                      &job->cutter);
+                      job->cutter_per_tool, &job->cutter);
     if (!s.ok()) s = Status::Error(FLAGS_in + ": " + s.message());
   }
   return s;

@@ -129,6 +129,7 @@ int RunSmooth(const Invocation& invocation) {
   settings.mode = FLAGS_mode == "spline" ? SmoothingMode::kSpline : SmoothingMode::kHighAccuracy;
   settings.schedule_feed = FLAGS_schedule_feed;
   settings.accept_over_tolerance = FLAGS_accept_over_tolerance;
+  settings.keep_runs_no_worse = FLAGS_keep_runs_no_worse;
   settings.judge_on_input_range = FLAGS_judge_on_input_range;
   settings.resample_step_mm = FLAGS_resample_step_mm;
   settings.feed.default_feed_mm_per_min = FLAGS_feed;

@@ -134,13 +134,19 @@ void Motion::PoseAt(int move, double s, Eigen::Vector3d* tip,
 // move by at most h: the solid's points move by at most h (1 + 2 R_max / L)
 // (translation plus a turn of at most 2 h / L at radius R_max), and the
 // value is a distance, up to the same taper factor.
+// With several cutters (one a move), the bound takes the largest reach, the
+// shortest flute and the smallest factor, which bounds each of them.
 class DistanceBound {
  public:
-  explicit DistanceBound(const Cutter& cutter)
-      : reach_mm_(cutter.RadiusAt(cutter.flute_length_mm)),
-        length_mm_(cutter.flute_length_mm),
-        positive_factor_(std::cos(cutter.taper_rad) /
-                         (1.0 + std::tan(cutter.taper_rad))) {}
+  explicit DistanceBound(const std::vector<const Cutter*>& cutters) {
+    CHECK(!cutters.empty());
+    for (const Cutter* cutter : cutters) {
+      reach_mm_ = std::max(reach_mm_, cutter->RadiusAt(cutter->flute_length_mm));
+      length_mm_ = std::min(length_mm_, cutter->flute_length_mm);
+      positive_factor_ =
+          std::min(positive_factor_, std::cos(cutter->taper_rad) / (1.0 + std::tan(cutter->taper_rad)));
+    }
+  }
 
   double Lower(double distance_mm, double margin_mm) const {
     const double x = distance_mm - margin_mm - reach_mm_;
@@ -152,9 +158,9 @@ class DistanceBound {
   }
 
  private:
-  double reach_mm_;
-  double length_mm_;
-  double positive_factor_;
+  double reach_mm_ = 0.0;
+  double length_mm_ = std::numeric_limits<double>::infinity();
+  double positive_factor_ = 1.0;
 };
 
 // Least value of f on [lo, hi] by Brent's method (parabolic steps
@@ -336,11 +342,13 @@ int BuildBvh(const std::vector<PreparedMove>& moves, int first, int last,
 // branch and bound over the hierarchy.
 class SweptDistance {
  public:
-  SweptDistance(const Motion& motion, const Cutter& cutter, int substeps)
-      : motion_(motion), cutter_(cutter), bound_(cutter) {
+  // cutters[m] cuts move m.
+  SweptDistance(const Motion& motion, const std::vector<const Cutter*>& cutters, int substeps)
+      : motion_(motion), cutters_(cutters), bound_(cutters) {
+    CHECK_EQ(static_cast<int>(cutters.size()), motion.num_moves());
     moves_.reserve(motion.num_moves());
     for (int m = 0; m < motion.num_moves(); ++m) {
-      moves_.push_back(PrepareMove(motion, cutter, m, substeps));
+      moves_.push_back(PrepareMove(motion, *cutters[m], m, substeps));
     }
     nodes_.reserve(2 * moves_.size());
     BuildBvh(moves_, 0, static_cast<int>(moves_.size()) - 1, &nodes_);
@@ -358,13 +366,13 @@ class SweptDistance {
   double DistanceAt(int move, double s, const Eigen::Vector3d& q) const {
     Eigen::Vector3d tip, axis;
     motion_.PoseAt(move, s, &tip, &axis);
-    return SignedDistanceToCutter<double>(cutter_, q, tip, axis);
+    return SignedDistanceToCutter<double>(*cutters_[move], q, tip, axis);
   }
   double LeastOverMove(int move, const Eigen::Vector3d& q,
                        double to_beat) const;
 
   const Motion& motion_;
-  const Cutter& cutter_;
+  const std::vector<const Cutter*>& cutters_;
   DistanceBound bound_;
   std::vector<PreparedMove> moves_;
   std::vector<BvhNode> nodes_;
@@ -383,7 +391,7 @@ double SweptDistance::LeastOverMove(int move, const Eigen::Vector3d& q,
   std::vector<double> value(count + 1);
   double best = to_beat;
   for (int k = 0; k <= count; ++k) {
-    value[k] = SignedDistanceToCutter<double>(cutter_, q, m.tips[k], m.axes[k]);
+    value[k] = SignedDistanceToCutter<double>(*cutters_[move], q, m.tips[k], m.axes[k]);
     best = std::min(best, value[k]);
   }
   std::vector<std::pair<double, int>> minima;
@@ -507,6 +515,28 @@ Status CheckInputs(const Cutter& cutter, const Motion& motion,
   return Status::Ok();
 }
 
+// The cutter of each move of `motion` (DeviationOptions::cutter_per_tool):
+// the cutter of the tool that makes the pose the move goes to, where the
+// program defines one, else `cutter`. Fails naming the tool and its line for
+// a tool's cutter that is not valid.
+Status MoveCutters(const Cutter& cutter, const ToolPath& path, const Motion& motion,
+                   const DeviationOptions& options, std::vector<const Cutter*>* cutters) {
+  cutters->assign(motion.num_moves(), &cutter);
+  if (!options.cutter_per_tool) return Status::Ok();
+  for (int m = 0; m < motion.num_moves(); ++m) {
+    const int tool = path.poses[motion.start_pose(m) + 1].tool;
+    if (tool < 0 || static_cast<size_t>(tool) >= path.tools.size()) continue;
+    const ToolRecord& record = path.tools[tool];
+    if (!record.cutter) continue;
+    const Status s = record.cutter->Validate("deviation: tool " + std::to_string(record.number) +
+                                             " (line " + std::to_string(record.source_line) +
+                                             ")");
+    if (!s.ok()) return s;
+    (*cutters)[m] = &*record.cutter;
+  }
+  return Status::Ok();
+}
+
 // Fills every grid point with least(q) and summarises. One driver for the
 // fast evaluator and its brute-force reference, so both see the same grid.
 // `least` is called in grid order (u outer, v inner).
@@ -537,8 +567,10 @@ Status EvaluateFast(const RuledSurface& surface, const Cutter& cutter,
                     const ToolPath& path, const Motion& motion,
                     const DeviationOptions& options, DeviationReport* report) {
   Status s = CheckInputs(cutter, motion, options);
+  std::vector<const Cutter*> cutters;
+  if (s.ok()) s = MoveCutters(cutter, path, motion, options, &cutters);
   if (!s.ok()) return s;
-  const SweptDistance swept(motion, cutter, options.substeps);
+  const SweptDistance swept(motion, cutters, options.substeps);
   // Neighbouring grid points are cut by the same or nearby moves.
   int hint = -1;
   auto least = [&](const Eigen::Vector3d& q) { return swept.Least(q, &hint); };
@@ -553,6 +585,9 @@ Status EvaluateBrute(const RuledSurface& surface, const Cutter& cutter,
     return Status::Error("deviation: substeps per move " +
                          std::to_string(substeps_per_move) + " must be >= 1");
   }
+  std::vector<const Cutter*> cutters;
+  Status s = MoveCutters(cutter, path, motion, options, &cutters);
+  if (!s.ok()) return s;
   auto least = [&](const Eigen::Vector3d& q) {
     double best = kInf;
     for (int m = 0; m < motion.num_moves(); ++m) {
@@ -561,7 +596,7 @@ Status EvaluateBrute(const RuledSurface& surface, const Cutter& cutter,
         motion.PoseAt(m, static_cast<double>(k) / substeps_per_move, &tip,
                       &axis);
         best = std::min(best,
-                        SignedDistanceToCutter<double>(cutter, q, tip, axis));
+                        SignedDistanceToCutter<double>(*cutters[m], q, tip, axis));
       }
     }
     return best;

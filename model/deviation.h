@@ -69,6 +69,11 @@ struct DeviationOptions {
   // library keeps the joint model by default; the tpopt command picks TCP
   // for APT and tcp-style G-code and joint for joint-style G-code.
   Interpolation interpolation = Interpolation::kJoint;
+  // Each move is cut by the cutter of its tool (ToolPose::tool of the pose
+  // it goes to, ToolPath::tools), where the program defines one; the
+  // `cutter` argument cuts the rest. Off by default: the one cutter given
+  // cuts every move (e.g. a --cutter_radius that overrides the program's).
+  bool cutter_per_tool = false;
 
   bool IsValid(std::string* why) const;
 };

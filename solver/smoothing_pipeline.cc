@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 #include <glog/logging.h>
@@ -28,14 +29,16 @@ Status WithinTravel(const Machine& machine, const ToolPath& path) {
 // no point of the surface may end up farther from the cutter than the
 // tolerance unless the input was farther still there (at poses the smoother
 // must hold, such as the targets of rapids, the input's error stands).
-// Returns the grid points (indices into out.deviation_mm) that break it.
+// Returns the grid points (indices into out.deviation_mm) that break it;
+// `slack_mm` is how far past the input's error counts as the input's (the
+// same moves evaluated again can differ in the last bits).
 std::vector<size_t> BeyondTolerance(const DeviationReport& in, const DeviationReport& out,
-                                    double tolerance_mm) {
+                                    double tolerance_mm, double slack_mm = 0.0) {
   CHECK_EQ(in.deviation_mm.size(), out.deviation_mm.size());
   std::vector<size_t> beyond;
   for (size_t k = 0; k < out.deviation_mm.size(); ++k) {
     const double d = std::abs(out.deviation_mm[k]);
-    if (d > tolerance_mm && d > std::abs(in.deviation_mm[k])) beyond.push_back(k);
+    if (d > tolerance_mm && d > std::abs(in.deviation_mm[k]) + slack_mm) beyond.push_back(k);
   }
   return beyond;
 }
@@ -117,54 +120,125 @@ Status RunPeaks(const ToolPath& path, const Machine& machine, double default_fee
   return Status::Ok();
 }
 
+// Where each cutting run of `path` starts, with path.poses.size() last.
+std::vector<size_t> RunStarts(const ToolPath& path) {
+  std::vector<size_t> first;
+  for (size_t i = 0; i < path.poses.size(); i = RunEnd(path, i)) first.push_back(i);
+  first.push_back(path.poses.size());
+  return first;
+}
+
+// `output` with the runs r where back[r] replaced by the same runs of
+// `input` (the two paths' runs pair up, RunStarts of each).
+ToolPath ComposeRuns(const ToolPath& input, const ToolPath& output, const std::vector<bool>& back) {
+  const std::vector<size_t> in_first = RunStarts(input), out_first = RunStarts(output);
+  CHECK_EQ(in_first.size(), back.size() + 1);
+  CHECK_EQ(out_first.size(), back.size() + 1);
+  ToolPath composed = WithoutPoses(output);
+  for (size_t r = 0; r < back.size(); ++r) {
+    const ToolPath& from = back[r] ? input : output;
+    const std::vector<size_t>& first = back[r] ? in_first : out_first;
+    composed.poses.insert(composed.poses.end(), from.poses.begin() + first[r],
+                          from.poses.begin() + first[r + 1]);
+  }
+  return composed;
+}
+
 // Puts back as programmed every run of `output` whose peak d2A/ds2 or
 // d2C/ds2 is higher than that of the same run of `input`, so that the
-// program as a whole is no worse on either. A run's first sample also sees
-// the last pose of the run before, which Ceres may move: a run put back
-// that is still worse puts its predecessor back too, until none is (at
-// worst the whole input). Returns how many runs were put back (0 when the
-// two paths' runs do not pair up, which no method makes).
-int KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double default_feed_mm_per_min,
-                    ToolPath* output) {
+// program as a whole is no worse on either; `back` (one flag a run) says
+// which, and may come in with runs already put back. A run's first sample
+// also sees the last pose of the run before, which a method may move: a run
+// put back that is still worse puts its predecessor back too, until none is
+// (at worst the whole input). False, with nothing changed, when the two
+// paths' runs do not pair up (which no method makes) or joints cannot be
+// assigned.
+bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double default_feed_mm_per_min,
+                     ToolPath* output, std::vector<bool>* back) {
   std::vector<std::array<double, 2>> before, after;
   if (!RunPeaks(input, machine, default_feed_mm_per_min, &before).ok() ||
       !RunPeaks(*output, machine, default_feed_mm_per_min, &after).ok() ||
       before.size() != after.size()) {
-    return 0;
+    return false;
   }
-  std::vector<size_t> in_first, out_first;  // where each run starts
-  for (size_t i = 0; i < input.poses.size(); i = RunEnd(input, i)) in_first.push_back(i);
-  for (size_t i = 0; i < output->poses.size(); i = RunEnd(*output, i)) out_first.push_back(i);
-  in_first.push_back(input.poses.size());
-  out_first.push_back(output->poses.size());
   const size_t runs = before.size();
-  std::vector<bool> back(runs, false);
-  ToolPath composed = *output;
+  if (back->size() != runs) back->assign(runs, false);
+  ToolPath composed = ComposeRuns(input, *output, *back);
+  if (!RunPeaks(composed, machine, default_feed_mm_per_min, &after).ok()) return false;
   // Round-off of the written 6 decimals is no worsening.
   constexpr double kSlack = 1e-9;
   for (bool changed = true; changed;) {
     changed = false;
     for (size_t r = 0; r < runs; ++r) {
       if (after[r][0] <= before[r][0] + kSlack && after[r][1] <= before[r][1] + kSlack) continue;
-      if (!back[r]) {
-        back[r] = changed = true;
-      } else if (r > 0 && !back[r - 1]) {
-        back[r - 1] = changed = true;
+      if (!(*back)[r]) {
+        (*back)[r] = changed = true;
+      } else if (r > 0 && !(*back)[r - 1]) {
+        (*back)[r - 1] = changed = true;
       }
     }
     if (!changed) break;
-    composed = WithoutPoses(*output);
-    for (size_t r = 0; r < runs; ++r) {
-      const ToolPath& from = back[r] ? input : *output;
-      const size_t first = back[r] ? in_first[r] : out_first[r];
-      const size_t end = back[r] ? in_first[r + 1] : out_first[r + 1];
-      composed.poses.insert(composed.poses.end(), from.poses.begin() + first,
-                            from.poses.begin() + end);
-    }
-    if (!RunPeaks(composed, machine, default_feed_mm_per_min, &after).ok()) return 0;
+    composed = ComposeRuns(input, *output, *back);
+    if (!RunPeaks(composed, machine, default_feed_mm_per_min, &after).ok()) return false;
   }
   *output = std::move(composed);
-  return static_cast<int>(std::count(back.begin(), back.end(), true));
+  return true;
+}
+
+using Evaluator = std::function<Status(const std::string& what, const ToolPath& path,
+                                        PathMetrics* metrics)>;
+
+// High accuracy, a step after the solve and its tolerance check: the runs
+// the solve made worse on peak d2A/ds2 or d2C/ds2 go back as programmed
+// (KeepRunsNoWorse), so the mode never returns a program worse on either.
+// A put-back run is the input's own poses, so where it alone cuts, the
+// deviation is the input's and the tolerance (which spares what the input
+// left) holds there. Where a put-back run and a moved neighbour both reach a
+// point, the mix can leave it farther than either did: if the composed
+// program breaks the tolerance (when `tolerance_mm` > 0), the neighbours of
+// the put-back runs go back too, until it holds (at worst the whole input,
+// which the tolerance never refuses). On success result->output and
+// output_at_input_feed are the composed program's, and runs_kept_as_input
+// counts the runs put back.
+// A put-back run's moves evaluated in the composed path give the input's
+// deviation to round-off (seen: 1e-17 mm above it); a nanometre is far
+// below any tolerance.
+constexpr double kSameMovesSlackMm = 1e-6;
+
+Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per_min,
+                             double tolerance_mm, const Evaluator& evaluate,
+                             SmoothingResult* result) {
+  std::vector<bool> back;
+  for (;;) {
+    ToolPath composed = result->output;
+    if (!KeepRunsNoWorse(*job.input, *job.machine, default_feed_mm_per_min, &composed, &back)) {
+      return Status::Ok();
+    }
+    const int kept = static_cast<int>(std::count(back.begin(), back.end(), true));
+    if (kept == 0) return Status::Ok();
+    PathMetrics metrics;
+    Status s = evaluate("the output with " + std::to_string(kept) + " runs kept as programmed",
+                        composed, &metrics);
+    if (s.ok()) s = WithinTravel(*job.machine, composed);
+    if (!s.ok()) return s;
+    if (tolerance_mm <= 0.0 || kept == static_cast<int>(back.size()) ||
+        BeyondTolerance(*result->input_metrics.deviation, *metrics.deviation, tolerance_mm,
+                        kSameMovesSlackMm)
+            .empty()) {
+      result->output = std::move(composed);
+      result->output_at_input_feed = std::move(metrics);
+      result->runs_kept_as_input = kept;
+      return Status::Ok();
+    }
+    std::vector<bool> grown = back;
+    for (size_t r = 0; r < back.size(); ++r) {
+      if (!back[r]) continue;
+      if (r > 0) grown[r - 1] = true;
+      if (r + 1 < back.size()) grown[r + 1] = true;
+    }
+    if (grown == back) grown.assign(back.size(), true);
+    back = std::move(grown);
+  }
 }
 
 Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure* failure) {
@@ -180,9 +254,11 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   *failure = SmoothingFailure::kNone;
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
   const auto& poses = job.input->poses;
-  const bool cuts = std::any_of(poses.begin() + std::min<size_t>(1, poses.size()), poses.end(),
-                                [](const ToolPose& p) { return !IsPositioningMove(p); });
-  if (!cuts) {
+  const auto second = poses.begin() + std::min<size_t>(1, poses.size());
+  const bool feeds = std::any_of(second, poses.end(), [](const ToolPose& p) { return !p.rapid; });
+  const bool cuts =
+      std::any_of(second, poses.end(), [](const ToolPose& p) { return !IsPositioningMove(p); });
+  if (!feeds) {
     return Fail(SmoothingFailure::kBadInput,
                 "the path has no cutting move to smooth (" + std::to_string(poses.size()) +
                     " poses)",
@@ -209,6 +285,14 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   }
   if (s.ok()) s = WithinTravel(*job.machine, *job.input);
   if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+  if (!cuts) {
+    // Every feed move is one to keep as programmed (held, such as a
+    // program of pure rotary moves, or a link): the program goes out as it
+    // came, with nothing smoothed.
+    result->output = *job.input;
+    result->output_at_input_feed = result->output_metrics = result->input_metrics;
+    return Status::Ok();
+  }
 
   const SplineSmootherOptions spline_options =
       high_accuracy ? ForHighAccuracyGuess(settings.spline) : settings.spline;
@@ -240,9 +324,12 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   };
   if (!high_accuracy) {
     result->output = std::move(spline_path);
-    result->runs_kept_as_input = KeepRunsNoWorse(*job.input, *job.machine,
-                                                 settings.feed.default_feed_mm_per_min,
-                                                 &result->output);
+    std::vector<bool> back;
+    if (settings.keep_runs_no_worse &&
+        KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
+                        &result->output, &back)) {
+      result->runs_kept_as_input = static_cast<int>(std::count(back.begin(), back.end(), true));
+    }
     s = finish_output();
     if (!s.ok()) return s;
   } else {
@@ -347,6 +434,16 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                     failure);
       }
       break;
+    }
+    if (settings.keep_runs_no_worse) {
+      s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min,
+                                held_to_tolerance ? options.tolerance_mm : 0.0, evaluate, result);
+    }
+    if (!s.ok()) {
+      return Fail(SmoothingFailure::kSolver,
+                  "the smoothed path with runs kept as programmed does not fit the machine (" +
+                      s.message() + ")",
+                  failure);
     }
   }
   result->output_metrics = result->output_at_input_feed;

@@ -5,7 +5,8 @@
 // one the input itself starts the solve); the Ceres solve; resampling; the
 // refusal of a result that (with a surface) leaves points beyond the
 // tolerance after tightening the solve, or breaks more axis limits than its
-// start and the input (without one: is worse than its start); feed
+// start and the input (without one: is worse than its start); the runs
+// made worse on peak d2A/ds2 or d2C/ds2 put back as programmed; feed
 // scheduling; metrics of the output.
 #ifndef TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
 #define TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
@@ -44,6 +45,10 @@ struct SmoothingSettings {
   // then refused (kSolver, nothing to write), unless this is set; then the
   // first solve is reported, not refused.
   bool accept_over_tolerance = false;
+  // Put back as programmed the cutting runs the method made worse on peak
+  // d2A/ds2 or d2C/ds2 (SmoothingResult::runs_kept_as_input), so that
+  // neither mode returns a program worse on either.
+  bool keep_runs_no_worse = true;
   // Judge the initial guess and the output on the grid of the input's
   // covered range (CoveredRangeU) instead of each path's own, so that a
   // smoothed path that retreats from the surface's ends is charged for what
@@ -82,9 +87,10 @@ struct SmoothingResult {
   // with a penalty of its own), and how many points that set held.
   int tolerance_rounds = 0;
   int tolerance_points = 0;
-  // Spline mode: runs put back as programmed because the spline made their
-  // peak d2A/ds2 or d2C/ds2 higher than the input's (the spline mode never
-  // returns a program worse on either).
+  // Runs put back as programmed because the method made their peak d2A/ds2
+  // or d2C/ds2 higher than the input's (neither mode returns a program
+  // worse on either), or, in high-accuracy mode with a surface, because a
+  // neighbour put back left the mix beyond the tolerance.
   int runs_kept_as_input = 0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;

@@ -420,6 +420,51 @@ TEST(DeviationTest, MovesIntoARapidPoseDoNotCut) {
   EXPECT_EQ(report.undercut_u, 0.5);
 }
 
+// Two tools, each at its own radius + 0.05 from the plane: a pass of tool
+// 1 (R 4) over x in [0, 14], a rapid, a pass of tool 2 (R 2) over x in
+// [16, 30]. With a cutter a tool, each pass leaves 0.05 along it, and at
+// x = 15 the nearer pass end: min over the tools of hypot(1, R + 0.05) - R.
+// With one cutter (R 4) for both, tool 2's pass would cut 4 - 2.05 deep.
+TEST(DeviationTest, EachMoveIsCutByItsOwnToolWhenAsked) {
+  const RuledSurface plane = PlaneY0();
+  const Machine machine = SimMachine();
+  const double r1 = 4.0, r2 = 2.0, offset = 0.05;
+  ToolPath path;
+  path.tools.push_back({1, Cutter{r1, 20.0, 0.0}, 0.0, 3});
+  path.tools.push_back({2, Cutter{r2, 20.0, 0.0}, 0.0, 40});
+  path.cutter = path.tools[0].cutter;
+  for (int x = 0; x <= 14; ++x) {
+    path.poses.push_back(VerticalPose(x, r1 + offset));
+    path.poses.back().tool = 0;
+  }
+  for (int x = 16; x <= 30; ++x) {
+    path.poses.push_back(VerticalPose(x, r2 + offset, /*rapid=*/x == 16));
+    path.poses.back().tool = 1;
+  }
+  DeviationOptions options;
+  options.samples_u = 31;  // x = 0, 1, ..., 30
+  options.samples_v = 3;
+  options.cutter_per_tool = true;
+  const double at_15 = std::min(std::hypot(1.0, r1 + offset) - r1, std::hypot(1.0, r2 + offset) - r2);
+  for (const Machine* m : {&machine, static_cast<const Machine*>(nullptr)}) {
+    DeviationReport report, brute;
+    ASSERT_TRUE(EvaluateDeviation(plane, *path.cutter, path, m, options, &report).ok());
+    for (int x : {0, 7, 14, 16, 23, 30}) EXPECT_NEAR(report.At(x, 1), offset, 1e-9) << x;
+    EXPECT_NEAR(report.At(15, 1), at_15, 1e-9);
+    EXPECT_EQ(report.max_overcut_mm, 0.0);
+    ASSERT_TRUE(EvaluateDeviationBruteForce(plane, *path.cutter, path, m, options, 16, &brute).ok());
+    for (size_t k = 0; k < brute.deviation_mm.size(); ++k) {
+      EXPECT_NEAR(report.deviation_mm[k], brute.deviation_mm[k], 1e-9) << k;
+    }
+    // The one cutter given, for every move.
+    DeviationOptions one = options;
+    one.cutter_per_tool = false;
+    ASSERT_TRUE(EvaluateDeviation(plane, *path.cutter, path, m, one, &report).ok());
+    EXPECT_NEAR(report.At(23, 1), r2 + offset - r1, 1e-9);
+    EXPECT_NEAR(report.max_overcut_mm, r1 - r2 - offset, 1e-9);
+  }
+}
+
 // A path that stops short of the surface's end, judged on the range its
 // input covered, is charged for the material it leaves there; judged on its
 // own range it would look clean.

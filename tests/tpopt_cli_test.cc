@@ -523,15 +523,29 @@ TEST(TpoptCliTest, PartSetupPlacesAnAptProgramAndWritesItBackInItsFrame) {
 TEST(TpoptCliTest, TwoToolSizesAreNotJudgedAgainstASurfaceWithOne) {
   TempDir dir;
   const std::string in = SourcePath("tests/programs/nx_inch_tools.cls");
-  auto r = RunCommand(Tpopt("evaluate --in=" + in + " --surface=" + kBlade +
-                            " --report=" + dir.File("e.json")));
+  // evaluate judges each move with its own tool (the closed form is in
+  // deviation_test); the report says so.
+  const std::string report = dir.File("e.json");
+  auto r = RunCommand(Tpopt("evaluate --in=" + in + " --surface=" + kBlade + " --report=" +
+                            report));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(ReadJson(report)["cutter"]["per_tool"].get<bool>());
+  // Given a radius, that one cutter judges every move.
+  r = RunCommand(Tpopt("evaluate --in=" + in + " --surface=" + kBlade +
+                       " --cutter_radius=3 --report=" + report));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(ReadJson(report)["cutter"]["per_tool"].get<bool>());
+  // The smoothers take one cutter: refused, naming both tools and lines.
+  r = RunCommand(Tpopt("smooth --mode=spline --in=" + in + " --surface=" + kBlade +
+                       " --out=" + dir.File("o.cls")));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("the program cuts with tool 1 (line 3, D 12.7 mm) and tool 2 (line 46, "
                           "D 6.35 mm)"),
             std::string::npos)
       << r.output;
+  EXPECT_FALSE(FileExists(dir.File("o.cls")));
   // Without a surface the tools' sizes judge nothing: evaluated.
-  r = RunCommand(Tpopt("evaluate --in=" + in + " --report=" + dir.File("e.json")));
+  r = RunCommand(Tpopt("evaluate --in=" + in + " --report=" + report));
   EXPECT_EQ(r.exit_code, 0) << r.output;
 }
 
