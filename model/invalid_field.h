@@ -24,6 +24,24 @@ inline std::string InvalidField(const std::string& field,
   return field + " must be " + rule + " (got '" + value + "')";
 }
 
+// Collects the first broken rule of an IsValid, in the order the rules are
+// checked: Require(...) each rule, then `return check.Report(why);`.
+class FirstInvalid {
+ public:
+  void Require(bool ok, const std::string& message) {
+    if (problem_.empty() && !ok) problem_ = message;
+  }
+  // Writes the problem (empty when every rule held) to `why` if given;
+  // true when every rule held.
+  bool Report(std::string* why) const {
+    if (why != nullptr) *why = problem_;
+    return problem_.empty();
+  }
+
+ private:
+  std::string problem_;
+};
+
 }  // namespace tpopt
 
 #endif  // TPOPT_MODEL_INVALID_FIELD_H_

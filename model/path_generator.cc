@@ -37,29 +37,25 @@ Eigen::Vector3d Perturb(const Eigen::Vector3d& axis, double sigma_rad, std::mt19
 }  // namespace
 
 bool FlankPathOptions::IsValid(std::string* why) const {
-  std::string problem;
-  auto require = [&problem](bool ok, const std::string& message) {
-    if (problem.empty() && !ok) problem = message;
-  };
-  require(std::isfinite(cutter_radius_mm) && cutter_radius_mm > 0,
+  FirstInvalid check;
+  check.Require(std::isfinite(cutter_radius_mm) && cutter_radius_mm > 0,
           InvalidField("--cutter_radius", cutter_radius_mm, "finite and > 0 mm"));
-  require(poses >= 2, InvalidField("--poses", poses, ">= 2"));
-  require(std::isfinite(feed_mm_per_min) && feed_mm_per_min > 0,
+  check.Require(poses >= 2, InvalidField("--poses", poses, ">= 2"));
+  check.Require(std::isfinite(feed_mm_per_min) && feed_mm_per_min > 0,
           InvalidField("--feed", feed_mm_per_min, "finite and > 0 mm/min"));
-  require(std::isfinite(uv_distortion) && std::abs(uv_distortion) <= 0.5,
+  check.Require(std::isfinite(uv_distortion) && std::abs(uv_distortion) <= 0.5,
           InvalidField("--uv_distortion", uv_distortion, "finite and within [-0.5, 0.5]"));
-  require(distortion_width > 0 && distortion_width <= 1,
+  check.Require(distortion_width > 0 && distortion_width <= 1,
           InvalidField("--distortion_width", distortion_width, "in (0, 1]"));
-  require(distortion_center >= 0 && distortion_center <= 1,
+  check.Require(distortion_center >= 0 && distortion_center <= 1,
           InvalidField("--distortion_center", distortion_center, "in [0, 1]"));
-  require(std::isfinite(axis_noise_deg) && axis_noise_deg >= 0 && axis_noise_deg < 45,
+  check.Require(std::isfinite(axis_noise_deg) && axis_noise_deg >= 0 && axis_noise_deg < 45,
           InvalidField("--axis_noise_deg", axis_noise_deg, "in [0, 45)"));
-  require(std::isfinite(flute_length_mm) && flute_length_mm >= 0,
+  check.Require(std::isfinite(flute_length_mm) && flute_length_mm >= 0,
           InvalidField("--flute_length", flute_length_mm, "finite and >= 0 mm"));
-  require(taper_rad >= 0 && taper_rad < M_PI / 4,
+  check.Require(taper_rad >= 0 && taper_rad < M_PI / 4,
           InvalidField("taper_rad", taper_rad, "in [0, pi/4)"));
-  if (why != nullptr) *why = problem;
-  return problem.empty();
+  return check.Report(why);
 }
 
 double UvDistortion(const FlankPathOptions& o, double u) {

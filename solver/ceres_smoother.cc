@@ -316,14 +316,11 @@ bool ClampToBand(const ToleranceBandCost::Band& band, ToolPose* pose) {
 }  // namespace
 
 bool HighAccuracyOptions::IsValid(std::string* why) const {
-  std::string problem;
-  auto require = [&problem](bool ok, const std::string& message) {
-    if (problem.empty() && !ok) problem = message;
-  };
+  FirstInvalid check;
   auto finite_at_least = [](double v, double lo) { return v >= lo && std::isfinite(v); };
-  require(tolerance_mm > 0 && std::isfinite(tolerance_mm),
+  check.Require(tolerance_mm > 0 && std::isfinite(tolerance_mm),
           InvalidField("--tolerance_mm", tolerance_mm, "finite and > 0"));
-  require(finite_at_least(overcut_factor, 1),
+  check.Require(finite_at_least(overcut_factor, 1),
           InvalidField("--overcut_factor", overcut_factor, "finite and >= 1"));
   const std::pair<const char*, double> weights[] = {
       {"--w_deviation", w_deviation},   {"--w_second", w_second},
@@ -331,42 +328,41 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
       {"--w_tip_third", w_tip_third},   {"--w_limits", w_limits},
       {"--w_tip_height", w_tip_height}, {"--w_walls", w_walls}};
   for (const auto& [flag, w] : weights) {
-    require(finite_at_least(w, 0), InvalidField(flag, w, "finite and >= 0"));
+    check.Require(finite_at_least(w, 0), InvalidField(flag, w, "finite and >= 0"));
   }
-  require(axis_cone_deg > 0 && axis_cone_deg <= 90,
+  check.Require(axis_cone_deg > 0 && axis_cone_deg <= 90,
           InvalidField("--axis_cone_deg", axis_cone_deg, "in (0, 90]"));
-  require(travel_margin_mm > 0 && std::isfinite(travel_margin_mm),
+  check.Require(travel_margin_mm > 0 && std::isfinite(travel_margin_mm),
           InvalidField("travel_margin_mm", travel_margin_mm, "finite and > 0"));
-  require(limit_margin > 0 && limit_margin <= 1,
+  check.Require(limit_margin > 0 && limit_margin <= 1,
           InvalidField("--limit_margin", limit_margin, "in (0, 1]"));
   for (size_t k = 0; k < guard_distances_mm.size(); ++k) {
     const double d = guard_distances_mm[k];
-    require(d > 0 && std::isfinite(d),
+    check.Require(d > 0 && std::isfinite(d),
             InvalidField("guard_distances_mm[" + std::to_string(k) + "]", d, "finite and > 0"));
   }
-  require(finite_at_least(between_min_move_mm, 0),
+  check.Require(finite_at_least(between_min_move_mm, 0),
           InvalidField("between_min_move_mm", between_min_move_mm, "finite and >= 0"));
-  require(ruling_samples >= 2, InvalidField("--ruling_samples", ruling_samples, ">= 2"));
-  require(between_samples >= 0, InvalidField("--between_samples", between_samples, ">= 0"));
-  require(angle_tolerance_deg > 0,
+  check.Require(ruling_samples >= 2, InvalidField("--ruling_samples", ruling_samples, ">= 2"));
+  check.Require(between_samples >= 0, InvalidField("--between_samples", between_samples, ">= 0"));
+  check.Require(angle_tolerance_deg > 0,
           InvalidField("--angle_tolerance_deg", angle_tolerance_deg, "> 0"));
-  require(w_band > 0, InvalidField("w_band", w_band, "> 0"));
-  require(slide_weight >= 0, InvalidField("slide_weight", slide_weight, ">= 0"));
-  require(default_feed_mm_per_min > 0,
+  check.Require(w_band > 0, InvalidField("w_band", w_band, "> 0"));
+  check.Require(slide_weight >= 0, InvalidField("slide_weight", slide_weight, ">= 0"));
+  check.Require(default_feed_mm_per_min > 0,
           InvalidField("--feed", default_feed_mm_per_min, "> 0 mm/min"));
-  require(window_poses == 0 || window_poses >= 100,
+  check.Require(window_poses == 0 || window_poses >= 100,
           InvalidField("--window_poses", window_poses, "0 (no windows) or >= 100"));
-  require(pole_window_path_poses >= 0,
+  check.Require(pole_window_path_poses >= 0,
           InvalidField("--pole_window_path_poses", pole_window_path_poses, ">= 0"));
-  require(coarse_poses >= 0, InvalidField("--coarse_poses", coarse_poses, ">= 0"));
-  require(refine_iterations >= 0,
+  check.Require(coarse_poses >= 0, InvalidField("--coarse_poses", coarse_poses, ">= 0"));
+  check.Require(refine_iterations >= 0,
           InvalidField("--refine_iterations", refine_iterations, ">= 0"));
-  require(pole_passage_deg >= 0 && pole_passage_deg < 90,
+  check.Require(pole_passage_deg >= 0 && pole_passage_deg < 90,
           InvalidField("--pole_passage_deg", pole_passage_deg, "in [0, 90)"));
-  require(max_iterations >= 0, InvalidField("--max_iterations", max_iterations, ">= 0"));
-  require(num_threads >= 1, InvalidField("--num_threads", num_threads, ">= 1"));
-  if (why != nullptr) *why = problem;
-  return problem.empty();
+  check.Require(max_iterations >= 0, InvalidField("--max_iterations", max_iterations, ">= 0"));
+  check.Require(num_threads >= 1, InvalidField("--num_threads", num_threads, ">= 1"));
+  return check.Report(why);
 }
 
 HighAccuracyOptions HighAccuracyOptions::SurfaceFree() {

@@ -198,24 +198,20 @@ void KeepRunTimes(const Machine& machine, const std::vector<JointVector>& joints
 }  // namespace
 
 bool FeedScheduleOptions::IsValid(std::string* why) const {
-  std::string problem;
-  auto require = [&problem](bool ok, const std::string& message) {
-    if (problem.empty() && !ok) problem = message;
-  };
-  require(margin > 0 && margin < 1, InvalidField("margin", margin, "in (0, 1)"));
-  require(max_feed_step > 0 && std::isfinite(max_feed_step),
+  FirstInvalid check;
+  check.Require(margin > 0 && margin < 1, InvalidField("margin", margin, "in (0, 1)"));
+  check.Require(max_feed_step > 0 && std::isfinite(max_feed_step),
           InvalidField("--max_feed_step", max_feed_step, "finite and > 0"));
-  require(default_feed_mm_per_min > 0 && std::isfinite(default_feed_mm_per_min),
+  check.Require(default_feed_mm_per_min > 0 && std::isfinite(default_feed_mm_per_min),
           InvalidField("--feed", default_feed_mm_per_min, "finite and > 0 mm/min"));
-  require(max_passes >= 1, InvalidField("max_passes", max_passes, ">= 1"));
-  require(max_feed_mm_per_min > 0,
+  check.Require(max_passes >= 1, InvalidField("max_passes", max_passes, ">= 1"));
+  check.Require(max_feed_mm_per_min > 0,
           InvalidField("--max_feed_mm_per_min", max_feed_mm_per_min, "> 0"));
-  require(max_feed_factor >= 1 && std::isfinite(max_feed_factor),
+  check.Require(max_feed_factor >= 1 && std::isfinite(max_feed_factor),
           InvalidField("--max_feed_factor", max_feed_factor, "finite and >= 1"));
-  require(keep_run_time_window_mm > 0,
+  check.Require(keep_run_time_window_mm > 0,
           InvalidField("--keep_run_time_window_mm", keep_run_time_window_mm, "> 0"));
-  if (why != nullptr) *why = problem;
-  return problem.empty();
+  return check.Report(why);
 }
 
 Status ScheduleFeed(const Machine& machine, const std::vector<JointVector>& joints,

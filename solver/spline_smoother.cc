@@ -126,23 +126,19 @@ class PinnedFit {
 }  // namespace
 
 bool SplineSmootherOptions::IsValid(std::string* why) const {
-  std::string problem;
-  auto require = [&problem](bool ok, const std::string& message) {
-    if (problem.empty() && !ok) problem = message;
-  };
-  require(zone_factor > 1 && std::isfinite(zone_factor),
+  FirstInvalid check;
+  check.Require(zone_factor > 1 && std::isfinite(zone_factor),
           InvalidField("--zone_factor", zone_factor, "finite and > 1"));
-  require(zone_padding >= 0, InvalidField("--zone_padding", zone_padding, ">= 0"));
-  require(angle_tolerance_deg > 0 && std::isfinite(angle_tolerance_deg),
+  check.Require(zone_padding >= 0, InvalidField("--zone_padding", zone_padding, ">= 0"));
+  check.Require(angle_tolerance_deg > 0 && std::isfinite(angle_tolerance_deg),
           InvalidField("--spline_tolerance_deg", angle_tolerance_deg, "finite and > 0"));
-  require(zone_weight > 0 && zone_weight <= 1,
+  check.Require(zone_weight > 0 && zone_weight <= 1,
           InvalidField("zone_weight", zone_weight, "in (0, 1]"));
-  require(pole_passage_deg >= 0 && pole_passage_deg < 90,
+  check.Require(pole_passage_deg >= 0 && pole_passage_deg < 90,
           InvalidField("--pole_passage_deg", pole_passage_deg, "in [0, 90)"));
-  require(pole_crossing_deg >= 0 && std::isfinite(pole_crossing_deg),
+  check.Require(pole_crossing_deg >= 0 && std::isfinite(pole_crossing_deg),
           InvalidField("--pole_crossing_deg", pole_crossing_deg, "finite and >= 0"));
-  if (why != nullptr) *why = problem;
-  return problem.empty();
+  return check.Report(why);
 }
 
 namespace {

@@ -152,32 +152,28 @@ Candidate SearchLeadTilt(const PostureOptions& options, const Posture* previous,
 }  // namespace
 
 bool PostureOptions::IsValid(std::string* why) const {
-  std::string problem;
-  auto require = [&problem](bool ok, const std::string& message) {
-    if (problem.empty() && !ok) problem = message;
-  };
+  FirstInvalid check;
   const double deg = kRadToDeg;
   std::ostringstream lead_range;
   lead_range << "[" << min_lead_rad * deg << ", " << max_lead_rad * deg << "]";
-  require(tolerance_mm > 0.0 && tolerance_mm <= 10.0,
+  check.Require(tolerance_mm > 0.0 && tolerance_mm <= 10.0,
           InvalidField("--tolerance_mm", tolerance_mm, "in (0, 10]"));
-  require(min_lead_rad > 0.0, InvalidField("--min_lead_deg", min_lead_rad * deg, "> 0"));
-  require(max_lead_rad >= min_lead_rad && max_lead_rad < M_PI / 2,
+  check.Require(min_lead_rad > 0.0, InvalidField("--min_lead_deg", min_lead_rad * deg, "> 0"));
+  check.Require(max_lead_rad >= min_lead_rad && max_lead_rad < M_PI / 2,
           InvalidField("--max_lead_deg", max_lead_rad * deg,
                        ">= --min_lead_deg and < 90"));
-  require(sturz_lead_rad >= min_lead_rad && sturz_lead_rad <= max_lead_rad,
+  check.Require(sturz_lead_rad >= min_lead_rad && sturz_lead_rad <= max_lead_rad,
           InvalidField("--lead_deg", sturz_lead_rad * deg,
                        "in [--min_lead_deg, --max_lead_deg] = " + lead_range.str()));
-  require(max_tilt_rad >= 0.0 && max_tilt_rad < M_PI / 2,
+  check.Require(max_tilt_rad >= 0.0 && max_tilt_rad < M_PI / 2,
           InvalidField("--max_tilt_deg", max_tilt_rad * deg, "in [0, 90)"));
-  require(gouge_tolerance_mm >= 0.0,
+  check.Require(gouge_tolerance_mm >= 0.0,
           InvalidField("gouge_tolerance_mm", gouge_tolerance_mm, ">= 0"));
-  require(angle_resolution_rad > 0.0,
+  check.Require(angle_resolution_rad > 0.0,
           InvalidField("angle_resolution_rad", angle_resolution_rad, "> 0"));
-  require(continuity_tie >= 0.0 && continuity_tie < 1.0,
+  check.Require(continuity_tie >= 0.0 && continuity_tie < 1.0,
           InvalidField("continuity_tie", continuity_tie, "in [0, 1)"));
-  if (why != nullptr) *why = problem;
-  return problem.empty();
+  return check.Report(why);
 }
 
 PlacedTool PlaceTool(const TorusCutter& cutter, const CrossSection& section,
