@@ -47,7 +47,7 @@ int RunEvaluate(const Invocation& invocation) {
   s = CheckOutputFolders({FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
   PathMetrics metrics;
-  if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job, /*cutter_per_tool=*/true);
+  if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job);
   deviation_options.cutter_per_tool = job.cutter_per_tool;
   if (s.ok()) {
     ProgressDisplay progress(stderr, "tpopt evaluate", !FLAGS_quiet, FLAGS_progress_after_s);

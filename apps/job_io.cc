@@ -226,23 +226,7 @@ std::pair<const ToolRecord*, const ToolRecord*> DifferingTools(const ToolPath& p
 }  // namespace
 
 Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
-                     double flute_flag_mm, bool cutter_per_tool, Cutter* cutter) {
-  // The smoothers judge a path against a surface with one cutter: a
-  // program that cuts with tools of other sizes would be judged with the
-  // wrong one, unless each move takes its own (cutter_per_tool).
-  if (surface != nullptr && radius_flag_mm == 0.0 && !cutter_per_tool) {
-    const auto [first, other] = DifferingTools(path);
-    if (other != nullptr) {
-      char buf[256];
-      std::snprintf(buf, sizeof(buf),
-                    "the program cuts with tool %d (line %d, D %g mm) and tool %d (line %d, D "
-                    "%g mm); deviation from a surface takes one cutter here: `tpopt evaluate` "
-                    "judges each move with its own tool, or give --cutter_radius",
-                    first->number, first->source_line, 2 * first->cutter->radius_mm,
-                    other->number, other->source_line, 2 * other->cutter->radius_mm);
-      return Status::Error(buf);
-    }
-  }
+                     double flute_flag_mm, Cutter* cutter) {
   Cutter c;
   const bool have_file = path.cutter.has_value();
   if (have_file) c = *path.cutter;
@@ -262,7 +246,7 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
   return Status::Ok();
 }
 
-Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job, bool cutter_per_tool) {
+Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   job->has_surface = !FLAGS_surface.empty();
   Status s = LoadMachine(FLAGS_machine, &job->machine);
   if (s.ok()) s = LoadToolPath(FLAGS_in, job->machine, quiet, &job->path);
@@ -287,10 +271,10 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job, bool cutter_p
     s = ReadControllerRun(FLAGS_cnc_summary, &*job->controller);
   }
   if (s.ok()) {
-    job->cutter_per_tool = cutter_per_tool && job->has_surface && FLAGS_cutter_radius == 0.0 &&
+    job->cutter_per_tool = job->has_surface && FLAGS_cutter_radius == 0.0 &&
                            FLAGS_flute_length == 0.0 && DifferingTools(job->path).second != nullptr;
     s = ResolveCutter(job->path, job->surface_or_null(), FLAGS_cutter_radius, FLAGS_flute_length,
-                      job->cutter_per_tool, &job->cutter);
+                      &job->cutter);
     if (!s.ok()) s = Status::Error(FLAGS_in + ": " + s.message());
   }
   return s;

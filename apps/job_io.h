@@ -52,14 +52,12 @@ Status LoadMachine(const std::string& path, Machine* machine);
 
 // The cutter: --cutter_radius / --flute_length when set, else the path's
 // TLDATA/CUTTER; a path without one needs --cutter_radius. Without a flute
-// length anywhere, 1.25 x the surface's longest ruling (or 100 mm). Against
-// a surface, without --cutter_radius, a program that cuts with tools of
-// different sizes is refused naming both tools and their lines, unless
-// `cutter_per_tool` (each move is then judged with its own tool's cutter,
-// DeviationOptions::cutter_per_tool, and `cutter` cuts the moves of tools
-// the program gives no size).
+// length anywhere, 1.25 x the surface's longest ruling (or 100 mm). A
+// program that cuts with tools of different sizes has each move judged and
+// smoothed with its own tool's cutter (Job::cutter_per_tool); `cutter` then
+// cuts the moves of tools the program gives no size.
 Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double radius_flag_mm,
-                     double flute_flag_mm, bool cutter_per_tool, Cutter* cutter);
+                     double flute_flag_mm, Cutter* cutter);
 
 // --surface as a ruled surface: tpopt's JSON, or a STEP/IGES face chosen
 // by --face, --ruling, --flip_cutter_side and --max_ruled_deviation_mm, in
@@ -91,8 +89,10 @@ struct Job {
   std::optional<CadSurfaceInfo> surface_cad;  // set when --surface is STEP or IGES
   Machine machine;
   Cutter cutter;
-  // Each move is judged with its own tool's cutter (LoadJob's
-  // cutter_per_tool, and neither --cutter_radius nor --flute_length given).
+  // Each move is judged and smoothed with its own tool's cutter
+  // (DeviationOptions::cutter_per_tool): against a surface, when the program
+  // cuts with tools of different sizes and neither --cutter_radius nor
+  // --flute_length names one cutter for all.
   bool cutter_per_tool = false;
   // From --cnc_summary, if given.
   std::optional<ControllerRun> controller;
@@ -100,9 +100,8 @@ struct Job {
 };
 
 // Loads a Job from the flags, its links marked by `links`; errors name the
-// file at fault. `cutter_per_tool`: the caller judges each move with its own
-// tool's cutter unless the flags give one (see ResolveCutter).
-Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job, bool cutter_per_tool = false);
+// file at fault.
+Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job);
 
 // --interpolation, or without it the model of the program `path` written
 // or read in G-code style `gcode_style` ("tcp" or "joint"): joint for

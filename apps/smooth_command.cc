@@ -53,6 +53,9 @@ Status WriteOutputs(const Invocation& invocation, const Job& job, const Smoothin
           ControllerRunJson(*job.controller, result.output_metrics.motion.planner_time_s);
     }
     report["interpolation"] = InterpolationName(interpolation);
+    report["cutter"] = {{"radius_mm", job.cutter.radius_mm},
+                        {"flute_length_mm", job.cutter.flute_length_mm},
+                        {"per_tool", job.cutter_per_tool}};
     s = WriteReport(FLAGS_report, report);
   }
   if (s.ok()) {
@@ -172,6 +175,7 @@ int RunSmooth(const Invocation& invocation) {
   Job job;
   if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job);
   if (!s.ok()) return Fail(kExitBadInput, s.message());
+  settings.deviation.cutter_per_tool = job.cutter_per_tool;
   SmoothingResult result;
   SmoothingFailure failure = SmoothingFailure::kNone;
   if (FLAGS_mode == "none") {

@@ -188,6 +188,18 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
 using Evaluator = std::function<Status(const std::string& what, const ToolPath& path,
                                         PathMetrics* metrics)>;
 
+// Judges a path as the job's (its surface, cutter and machine) with
+// `*deviation` as it stands when called, telling settings.on_stage.
+Evaluator JudgeOf(const SmoothingJob& job, const SmoothingSettings& settings,
+                  const DeviationOptions* deviation) {
+  return [&job, &settings, deviation](const std::string& what, const ToolPath& path,
+                                      PathMetrics* metrics) {
+    if (settings.on_stage) settings.on_stage("evaluating " + what);
+    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, *deviation,
+                        settings.motion, metrics);
+  };
+}
+
 // High accuracy, a step after the solve and its tolerance check: the runs
 // the solve made worse on peak d2A/ds2 or d2C/ds2 go back as programmed
 // (KeepRunsNoWorse), so the mode never returns a program worse on either.
@@ -246,12 +258,13 @@ Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure*
   return Status::Error(message);
 }
 
-}  // namespace
-
-Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
-                    SmoothingResult* result, SmoothingFailure* failure) {
-  CHECK(job.input && job.cutter && job.machine && result && failure);
-  *failure = SmoothingFailure::kNone;
+// Everything RunSmoothing does but the feed schedule, with one cutter for
+// the whole path; `guess_out`, if not null, receives the high-accuracy
+// solve's starting path (the input in spline mode).
+Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& settings,
+                           SmoothingResult* result, SmoothingFailure* failure,
+                           ToolPath* guess_out) {
+  if (guess_out != nullptr) *guess_out = *job.input;
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
   const auto& poses = job.input->poses;
   const auto second = poses.begin() + std::min<size_t>(1, poses.size());
@@ -271,11 +284,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   // input's covered range (or the one asked for), never the range a
   // smoothed path happens to cover.
   DeviationOptions deviation = settings.deviation;
-  auto evaluate = [&](const std::string& what, const ToolPath& path, PathMetrics* metrics) {
-    stage("evaluating " + what);
-    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, deviation,
-                        settings.motion, metrics);
-  };
+  const Evaluator evaluate = JudgeOf(job, settings, &deviation);
   Status s = evaluate("the input", *job.input, &result->input_metrics);
   // (The range itself, not the grid's ends: u_min + (u_max - u_min) i / n
   // can round past 1 at the last point.)
@@ -361,6 +370,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     result->start_placed_on_surface = start_placed;
     const ToolPath& guess =
         job.surface == nullptr ? *job.input : start_placed ? placed : spline_path;
+    if (guess_out != nullptr) *guess_out = guess;
     std::vector<TolerancePoint> active;
     SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
     inputs.tolerance_points = &active;
@@ -447,7 +457,162 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     }
   }
   result->output_metrics = result->output_at_input_feed;
-  if (!settings.schedule_feed) return Status::Ok();
+  return Status::Ok();
+}
+
+// The cutter that cuts the move into `pose`: its tool's, where the program
+// sizes one, else `fallback` (as DeviationOptions::cutter_per_tool judges).
+const Cutter& CutterOf(const ToolPath& path, const ToolPose& pose, const Cutter& fallback) {
+  if (pose.tool >= 0 && path.tools[pose.tool].cutter) return *path.tools[pose.tool].cutter;
+  return fallback;
+}
+
+bool SameCutter(const Cutter& a, const Cutter& b) {
+  return a.radius_mm == b.radius_mm && a.flute_length_mm == b.flute_length_mm &&
+         a.taper_rad == b.taper_rad;
+}
+
+// Each move cut by its own tool's cutter (settings.deviation.cutter_per_tool):
+// the path is cut into pieces of one cutter each, at the tool changes,
+// which are moves kept as programmed (runs never cross them). Each piece is
+// smoothed with its cutter as a path of its own, which ends with the
+// first pose of the next piece so that its last cutting pose stays where a
+// whole-path smoothing keeps it (the pose before a kept move); the pieces'
+// outputs are joined and the whole judged with each move's own cutter.
+Status SmoothToolByTool(const SmoothingJob& job, const SmoothingSettings& settings,
+                        SmoothingResult* result, SmoothingFailure* failure) {
+  const ToolPath& input = *job.input;
+  std::vector<size_t> first = {0};
+  for (size_t i = 1; i < input.poses.size(); ++i) {
+    if (SameCutter(CutterOf(input, input.poses[i], *job.cutter),
+                   CutterOf(input, input.poses[i - 1], *job.cutter))) {
+      continue;
+    }
+    if (!IsPositioningMove(input.poses[i])) {
+      return Fail(SmoothingFailure::kBadInput,
+                  "pose " + std::to_string(i) + " (line " +
+                      std::to_string(input.poses[i].source_line) +
+                      ") changes the cutter inside a cutting run",
+                  failure);
+    }
+    first.push_back(i);
+  }
+  if (first.size() == 1) return SmoothWithOneCutter(job, settings, result, failure, nullptr);
+  first.push_back(input.poses.size());
+
+  const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
+  DeviationOptions deviation = settings.deviation;
+  const Evaluator evaluate = JudgeOf(job, settings, &deviation);
+  Status s = evaluate("the input", input, &result->input_metrics);
+  if (s.ok() && settings.judge_on_input_range && std::isnan(deviation.u_min)) {
+    CoveredRangeU(*job.surface, input, &deviation.u_min, &deviation.u_max);
+  }
+  if (s.ok()) s = WithinTravel(*job.machine, input);
+  if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+
+  ToolPath output = WithoutPoses(input), guesses = WithoutPoses(input);
+  HighAccuracyReport& ha = result->high_accuracy;
+  ha.converged = true;
+  for (size_t k = 0; k + 1 < first.size(); ++k) {
+    const bool last = k + 2 == first.size();
+    ToolPath piece = WithoutPoses(input);
+    piece.poses.assign(input.poses.begin() + first[k],
+                       input.poses.begin() + first[k + 1] + (last ? 0 : 1));
+    const Cutter& cutter = CutterOf(input, input.poses[first[k]], *job.cutter);
+    piece.cutter = cutter;
+    SmoothingSettings one = settings;
+    one.schedule_feed = false;
+    one.deviation.cutter_per_tool = false;
+    auto on_stage = settings.on_stage;
+    if (on_stage) {
+      one.on_stage = [&, k](const std::string& name) {
+        on_stage("tool piece " + std::to_string(k + 1) + " of " +
+                 std::to_string(first.size() - 1) + ": " + name);
+      };
+    }
+    SmoothingResult part;
+    ToolPath guess;
+    const bool feeds = std::any_of(piece.poses.begin() + 1, piece.poses.end(),
+                                   [](const ToolPose& p) { return !p.rapid; });
+    if (feeds) {
+      s = SmoothWithOneCutter({&piece, job.surface, &cutter, job.machine}, one, &part, failure,
+                              &guess);
+      if (!s.ok()) {
+        return Status::Error("the poses cut with the cutter of D " +
+                             std::to_string(2 * cutter.radius_mm) + " mm from line " +
+                             std::to_string(input.poses[first[k]].source_line) + ": " +
+                             s.message());
+      }
+    } else {
+      part.output = guess = piece;
+    }
+    if (!last) {
+      // The next piece's first pose, kept as programmed: it starts that
+      // piece's output.
+      CHECK(!part.output.poses.empty() && IsPositioningMove(part.output.poses.back()));
+      part.output.poses.pop_back();
+      guess.poses.pop_back();
+    }
+    output.poses.insert(output.poses.end(), part.output.poses.begin(), part.output.poses.end());
+    guesses.poses.insert(guesses.poses.end(), guess.poses.begin(), guess.poses.end());
+    result->runs_kept_as_input += part.runs_kept_as_input;
+    result->tolerance_rounds = std::max(result->tolerance_rounds, part.tolerance_rounds);
+    result->tolerance_points += part.tolerance_points;
+    result->solve_tolerance_mm = std::max(result->solve_tolerance_mm, part.solve_tolerance_mm);
+    result->start_placed_on_surface |= part.start_placed_on_surface;
+    SplineSmootherReport& sp = result->spline;
+    sp.zones += part.spline.zones;
+    sp.poses_in_zones += part.spline.poses_in_zones;
+    sp.poses_inserted += part.spline.poses_inserted;
+    sp.max_angle_change_deg = std::max(sp.max_angle_change_deg, part.spline.max_angle_change_deg);
+    sp.pole_crossings += part.spline.pole_crossings;
+    if (!feeds) continue;
+    const HighAccuracyReport& h = part.high_accuracy;
+    ha.converged = ha.converged && (h.converged || !high_accuracy);
+    if (!h.message.empty()) ha.message = h.message;
+    ha.iterations += h.iterations;
+    ha.solve_time_s += h.solve_time_s;
+    ha.initial_cost += h.initial_cost;
+    ha.final_cost += h.final_cost;
+    for (const auto& [family, cost] : h.final_cost_by_family) ha.final_cost_by_family[family] += cost;
+    ha.poses_clamped += h.poses_clamped;
+    ha.pole_passages += h.pole_passages;
+    ha.pole_passages_rerouted += h.pole_passages_rerouted;
+    ha.pole_passages_in_windows += h.pole_passages_in_windows;
+  }
+  result->output = std::move(output);
+  s = evaluate("the output", result->output, &result->output_at_input_feed);
+  if (s.ok()) s = WithinTravel(*job.machine, result->output);
+  if (!s.ok()) {
+    return Fail(SmoothingFailure::kSolver,
+                "the smoothed path does not fit the machine (" + s.message() + ")", failure);
+  }
+  if (high_accuracy) {
+    s = evaluate("the starting path", guesses, &result->initial_guess_metrics);
+    if (!s.ok()) return Fail(SmoothingFailure::kSolver, "start: " + s.message(), failure);
+  }
+  result->output_metrics = result->output_at_input_feed;
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
+                    SmoothingResult* result, SmoothingFailure* failure) {
+  CHECK(job.input && job.cutter && job.machine && result && failure);
+  *failure = SmoothingFailure::kNone;
+  Status s = settings.deviation.cutter_per_tool && job.surface != nullptr
+                 ? SmoothToolByTool(job, settings, result, failure)
+                 : SmoothWithOneCutter(job, settings, result, failure, nullptr);
+  if (!s.ok() || !settings.schedule_feed) return s;
+  auto stage = [&](const std::string& name) {
+    if (settings.on_stage) settings.on_stage(name);
+  };
+  DeviationOptions deviation = settings.deviation;
+  if (job.surface != nullptr && settings.judge_on_input_range && std::isnan(deviation.u_min)) {
+    CoveredRangeU(*job.surface, *job.input, &deviation.u_min, &deviation.u_max);
+  }
+  const Evaluator evaluate = JudgeOf(job, settings, &deviation);
   std::vector<JointVector> joints;
   stage("scheduling the feed");
   s = job.machine->AssignJoints(result->output, &joints);
