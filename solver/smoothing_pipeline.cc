@@ -538,10 +538,10 @@ Status SmoothToolByTool(const SmoothingJob& job, const SmoothingSettings& settin
       s = SmoothWithOneCutter({&piece, job.surface, &cutter, job.machine}, one, &part, failure,
                               &guess);
       if (!s.ok()) {
-        return Status::Error("the poses cut with the cutter of D " +
-                             std::to_string(2 * cutter.radius_mm) + " mm from line " +
-                             std::to_string(input.poses[first[k]].source_line) + ": " +
-                             s.message());
+        std::ostringstream what;
+        what << "the moves cut with the cutter of D " << 2 * cutter.radius_mm << " mm (from line "
+             << input.poses[first[k]].source_line << "): " << s.message();
+        return Status::Error(what.str());
       }
     } else {
       part.output = guess = piece;

@@ -520,7 +520,7 @@ TEST(TpoptCliTest, PartSetupPlacesAnAptProgramAndWritesItBackInItsFrame) {
       << r.output;
 }
 
-TEST(TpoptCliTest, TwoToolSizesAreNotJudgedAgainstASurfaceWithOne) {
+TEST(TpoptCliTest, TwoToolSizesAreEachJudgedAndSmoothedWithTheirOwnCutter) {
   TempDir dir;
   const std::string in = SourcePath("tests/programs/nx_inch_tools.cls");
   // evaluate judges each move with its own tool (the closed form is in
@@ -535,15 +535,26 @@ TEST(TpoptCliTest, TwoToolSizesAreNotJudgedAgainstASurfaceWithOne) {
                        " --cutter_radius=3 --report=" + report));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_FALSE(ReadJson(report)["cutter"]["per_tool"].get<bool>());
-  // The smoothers take one cutter: refused, naming both tools and lines.
+  // smooth too takes each tool's cutter (what that does to the deviation is
+  // in smoothing_pipeline_test), or the one given.
   r = RunCommand(Tpopt("smooth --mode=spline --in=" + in + " --surface=" + kBlade +
-                       " --out=" + dir.File("o.cls")));
-  EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("the program cuts with tool 1 (line 3, D 12.7 mm) and tool 2 (line 46, "
-                          "D 6.35 mm)"),
+                       " --out=" + dir.File("o.cls") + " --quiet --report=" + report));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(ReadJson(report)["cutter"]["per_tool"].get<bool>());
+  r = RunCommand(Tpopt("smooth --mode=spline --in=" + in + " --surface=" + kBlade +
+                       " --cutter_radius=3 --out=" + dir.File("o.cls") + " --quiet --report=" +
+                       report));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(ReadJson(report)["cutter"]["per_tool"].get<bool>());
+  // This program was not made for the blade: high accuracy refuses it,
+  // naming the tool's piece.
+  r = RunCommand(Tpopt("smooth --mode=high_accuracy --in=" + in + " --surface=" + kBlade +
+                       " --out=" + dir.File("h.cls")));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("the moves cut with the cutter of D 12.7 mm (from line 13)"),
             std::string::npos)
       << r.output;
-  EXPECT_FALSE(FileExists(dir.File("o.cls")));
+  EXPECT_FALSE(FileExists(dir.File("h.cls")));
   // Without a surface the tools' sizes judge nothing: evaluated.
   r = RunCommand(Tpopt("evaluate --in=" + in + " --report=" + report));
   EXPECT_EQ(r.exit_code, 0) << r.output;
