@@ -13,6 +13,7 @@
 #include "model/json_io.h"
 #include "model/linuxcnc_ini.h"
 #include "model/part_setup.h"
+#include "model/program_frame.h"
 #include "model/standing_moves.h"
 
 namespace tpopt {
@@ -246,6 +247,31 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
   return Status::Ok();
 }
 
+namespace {
+
+// The surface, in the CAD model's frame, brought into the frame the path's
+// poses are in: an APT program's own (its MSYS, model/program_frame.h),
+// then placed on the table as the program is (--part_setup).
+Status SurfaceIntoPathFrame(const ToolPath& path, const PartSetup& setup, RuledSurface* surface) {
+  ProgramFrame frame;
+  if (path.program != nullptr && path.program->format == ProgramFormat::kApt) {
+    Status s = ReadProgramFrame(*path.program, &frame);
+    if (!s.ok()) return s;
+  }
+  if (frame.IsIdentity() && setup.IsIdentity()) return Status::Ok();
+  // q_w = R_setup (R_frame^T (q - origin)) + t_setup.
+  const Eigen::Matrix3d into_program = frame.rotation.transpose();
+  const Eigen::Matrix3d r = setup.Rotation() * into_program;
+  const Eigen::Vector3d t =
+      setup.translation_mm - setup.Rotation() * (into_program * frame.origin_mm);
+  RuledSurface moved;
+  Status s = MoveRuledSurface(*surface, r, t, &moved);
+  if (s.ok()) *surface = std::move(moved);
+  return s;
+}
+
+}  // namespace
+
 Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   job->has_surface = !FLAGS_surface.empty();
   Status s = LoadMachine(FLAGS_machine, &job->machine);
@@ -265,6 +291,7 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
   if (s.ok()) MarkStandingMoves(&job->path);
   if (s.ok() && job->has_surface) {
     s = LoadRuledSurface(FLAGS_surface, &job->surface, &job->surface_cad);
+    if (s.ok()) s = SurfaceIntoPathFrame(job->path, setup, &job->surface);
   }
   if (s.ok() && !FLAGS_cnc_summary.empty()) {
     job->controller.emplace();

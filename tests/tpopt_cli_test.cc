@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <Eigen/Core>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -558,6 +559,94 @@ TEST(TpoptCliTest, TwoToolSizesAreEachJudgedAndSmoothedWithTheirOwnCutter) {
   // Without a surface the tools' sizes judge nothing: evaluated.
   r = RunCommand(Tpopt("evaluate --in=" + in + " --report=" + report));
   EXPECT_EQ(r.exit_code, 0) << r.output;
+}
+
+// The same cut given twice: once in the model's frame (the surface's), once
+// in an MCS turned 53.13 deg about Z (cos 0.6, sin 0.8: exact in the
+// record's decimals) and shifted, with the MSYS that says so. Judged
+// against the blade, the two give the same deviation; without the MSYS
+// (the moves read in the model's frame) the second is far off. The MSYS
+// program comes back byte for byte, and smoothed, in its own frame.
+TEST(TpoptCliTest, MsysBringsTheSurfaceIntoTheProgramsFrame) {
+  TempDir dir;
+  const std::string model = dir.File("model.cls");
+  auto r = RunCommand(Tpopt("generate --surface=" + kBlade + " --out=" + model +
+                            " --poses=60 --cutter_radius=4 --strategy=dpo --uv_distortion=0.02 "
+                            "--quiet"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const Eigen::Matrix3d rot = (Eigen::Matrix3d() << 0.6, -0.8, 0, 0.8, 0.6, 0, 0, 0, 1).finished();
+  const Eigen::Vector3d origin(12.5, -30.0, 7.25);
+  std::string msys_text, unplaced_text;
+  for (const std::string& line : Lines(model)) {
+    double x, y, z, i, j, k;
+    if (std::sscanf(line.c_str(), "GOTO/%lf,%lf,%lf,%lf,%lf,%lf", &x, &y, &z, &i, &j, &k) == 6) {
+      const Eigen::Vector3d p = rot.transpose() * (Eigen::Vector3d(x, y, z) - origin);
+      const Eigen::Vector3d a = rot.transpose() * Eigen::Vector3d(i, j, k);
+      char buf[160];
+      std::snprintf(buf, sizeof(buf), "GOTO/%.6f,%.6f,%.6f,%.9f,%.9f,%.9f", p.x(), p.y(), p.z(),
+                    a.x(), a.y(), a.z());
+      msys_text += std::string(buf) + "\n";
+      unplaced_text += std::string(buf) + "\n";
+      continue;
+    }
+    if (line.rfind("TLDATA/", 0) == 0) {
+      msys_text += "MSYS/12.5000,-30.0000,7.2500,0.6000000,0.8000000,0.0000000,-0.8000000,"
+                   "0.6000000,0.0000000\n";
+    }
+    msys_text += line + "\n";
+    unplaced_text += line + "\n";
+  }
+  const std::string msys = dir.File("msys.cls"), unplaced = dir.File("unplaced.cls");
+  std::ofstream(msys) << msys_text;
+  std::ofstream(unplaced) << unplaced_text;
+  auto judge = [&](const std::string& in) {
+    const std::string report = dir.File("r.json");
+    const auto e = RunCommand(Tpopt("evaluate --in=" + in + " --surface=" + kBlade +
+                                    " --report=" + report + " --quiet"));
+    EXPECT_EQ(e.exit_code, 0) << e.output;
+    return ReadJson(report);
+  };
+  const nlohmann::json a = judge(model), b = judge(msys), c = judge(unplaced);
+  for (const char* key : {"max_overcut_mm", "max_undercut_mm", "rms_deviation_mm"}) {
+    // The GOTOs' 6 decimals, rounded in two frames: a micrometre.
+    EXPECT_NEAR(a[key].get<double>(), b[key].get<double>(), 1e-5) << key;
+  }
+  EXPECT_GT(std::max(c["max_overcut_mm"].get<double>(), c["max_undercut_mm"].get<double>()),
+            1.0);
+  // Byte for byte through --mode=none, with the surface.
+  const std::string same = dir.File("same.cls");
+  r = RunCommand(Tpopt("smooth --mode=none --in=" + msys + " --surface=" + kBlade + " --out=" +
+                       same + " --quiet"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(testing::ReadFileText(same), testing::ReadFileText(msys));
+  // Smoothed: written in the MCS, each tip within the smoothing's reach of
+  // its source (the frames are 30 mm apart), every other line as it was.
+  const std::string out = dir.File("out.cls");
+  r = RunCommand(Tpopt("smooth --mode=spline --in=" + msys + " --surface=" + kBlade + " --out=" +
+                       out + " --quiet"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<std::string> in_lines = Lines(msys), out_lines = Lines(out);
+  ASSERT_EQ(in_lines.size(), out_lines.size());
+  int changed = 0;
+  for (size_t n = 0; n < in_lines.size(); ++n) {
+    double xa, ya, za, xb, yb, zb;
+    if (std::sscanf(in_lines[n].c_str(), "GOTO/%lf,%lf,%lf", &xa, &ya, &za) != 3) {
+      EXPECT_EQ(in_lines[n], out_lines[n]);
+      continue;
+    }
+    ASSERT_EQ(std::sscanf(out_lines[n].c_str(), "GOTO/%lf,%lf,%lf", &xb, &yb, &zb), 3);
+    EXPECT_LT(std::hypot(xb - xa, yb - ya, zb - za), 0.1) << in_lines[n] << " -> " << out_lines[n];
+    changed += in_lines[n] != out_lines[n];
+  }
+  EXPECT_GT(changed, 0);
+  // A second MSYS naming another frame: refused against a surface, named.
+  std::string two_text = msys_text;
+  two_text.insert(two_text.find("END-OF-PATH"), "MSYS/0,0,0,1,0,0,0,1,0\n");
+  std::ofstream(dir.File("two.cls")) << two_text;
+  r = RunCommand(Tpopt("evaluate --in=" + dir.File("two.cls") + " --surface=" + kBlade +
+                       " --report=" + dir.File("t.json")));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("a second MSYS names another frame"), std::string::npos) << r.output;
 }
 
 const std::string kPencilSurface = SourcePath("data/pencil/surface_120x120x55.json");
