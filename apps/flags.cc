@@ -213,6 +213,11 @@ DEFINE_double(ball_radius, 1.5, "pencil: ball-end cutter radius, mm.");
 DEFINE_double(interpolation_period_ms, 8.0,
               "pencil: interpolation period, ms; CC points are feed x period apart.");
 
+DEFINE_string(tool_table, "",
+              "evaluate, smooth: a LinuxCNC tool table (T1 P1 D6 Z12.5 ;comment) that sizes the "
+              "tools a G-code program loads (T, M6, M61): each tool's D is its cutter's "
+              "diameter. Empty: the [EMCIO] TOOL_TABLE of a --machine INI, if any.");
+
 DEFINE_string(part_setup, "",
               "evaluate, smooth: where an APT program's part frame sits on the table, "
               "tx,ty,tz,rx,ry,rz (mm, deg): p_table = Rz Ry Rx p_part + t. Empty: the "

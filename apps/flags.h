@@ -118,4 +118,6 @@ DECLARE_double(interpolation_period_ms);
 
 // The part on the table (APT programs)
 DECLARE_string(part_setup);
+// LinuxCNC tool table (G-code programs)
+DECLARE_string(tool_table);
 #endif  // TPOPT_APPS_FLAGS_H_

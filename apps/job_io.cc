@@ -12,6 +12,7 @@
 #include "model/gcode_io.h"
 #include "model/json_io.h"
 #include "model/linuxcnc_ini.h"
+#include "model/linuxcnc_tool_table.h"
 #include "model/part_setup.h"
 #include "model/program_frame.h"
 #include "model/standing_moves.h"
@@ -32,6 +33,11 @@ double LongestRulingMm(const RuledSurface& surface) {
   double longest = 0.0;
   for (int i = 0; i <= 100; ++i) longest = std::max(longest, surface.Dv(i / 100.0).norm());
   return longest;
+}
+
+// The flute length of a cutter that no program or flag gives one.
+double DefaultFluteLengthMm(const RuledSurface* surface) {
+  return surface != nullptr ? 1.25 * LongestRulingMm(*surface) : 100.0;
 }
 
 bool IsApt(const std::string& ext) { return ext == "cls" || ext == "apt" || ext == "cl"; }
@@ -239,7 +245,7 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
   if (flute_flag_mm != 0.0) {
     c.flute_length_mm = flute_flag_mm;
   } else if (!have_file) {
-    c.flute_length_mm = surface != nullptr ? 1.25 * LongestRulingMm(*surface) : 100.0;
+    c.flute_length_mm = DefaultFluteLengthMm(surface);
   }
   Status s = c.Validate("cutter");
   if (!s.ok()) return s;
@@ -270,6 +276,29 @@ Status SurfaceIntoPathFrame(const ToolPath& path, const PartSetup& setup, RuledS
   return s;
 }
 
+// Sizes a G-code program's tools from --tool_table, or from the tool table
+// a --machine INI names; the flute length is --flute_length or the default
+// ResolveCutter takes.
+Status SizeGcodeTools(const RuledSurface* surface, ToolPath* path) {
+  if (path->program == nullptr || path->program->format != ProgramFormat::kGcode) {
+    return Status::Ok();
+  }
+  std::string table_path = FLAGS_tool_table;
+  if (table_path.empty() && IsLinuxCncIni(FLAGS_machine)) {
+    Status s = LinuxCncIniToolTable(FLAGS_machine, &table_path);
+    if (!s.ok()) return s;
+  }
+  if (table_path.empty()) return Status::Ok();
+  LinuxCncToolTable table;
+  Status s = ReadLinuxCncToolTable(table_path, &table);
+  if (!s.ok()) return s;
+  const double flute =
+      FLAGS_flute_length != 0.0 ? FLAGS_flute_length : DefaultFluteLengthMm(surface);
+  s = SizeToolsFromTable(table, table_path, flute, path);
+  if (!s.ok()) return Status::Error(FLAGS_in + ": " + s.message());
+  return Status::Ok();
+}
+
 }  // namespace
 
 Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
@@ -297,6 +326,7 @@ Status LoadJob(bool quiet, const LinkMoveOptions& links, Job* job) {
     job->controller.emplace();
     s = ReadControllerRun(FLAGS_cnc_summary, &*job->controller);
   }
+  if (s.ok()) s = SizeGcodeTools(job->surface_or_null(), &job->path);
   if (s.ok()) {
     job->cutter_per_tool = job->has_surface && FLAGS_cutter_radius == 0.0 &&
                            FLAGS_flute_length == 0.0 && DifferingTools(job->path).second != nullptr;

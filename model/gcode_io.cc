@@ -317,6 +317,8 @@ class GcodeReader {
   }
 
   Status Codes(const std::vector<std::pair<char, double>>& words, int n, BlockCodes* codes) {
+    Status s = Tools(words, n);
+    if (!s.ok()) return s;
     for (const auto& [letter, value] : words) {
       if (letter == 'G') {
         Status s = GCode(value, n, codes);
@@ -345,6 +347,41 @@ class GcodeReader {
         codes->other = true;
       }
     }
+    return Status::Ok();
+  }
+
+  // T selects a tool, M6 loads the selected one and M61 Qn makes tool n the
+  // loaded one (LinuxCNC runs T before M6 whatever their order on the
+  // line): each load is a ToolRecord, and the moves after it take it.
+  Status Tools(const std::vector<std::pair<char, double>>& words, int n) {
+    bool change = false, set = false;
+    double q = -1;
+    for (const auto& [letter, value] : words) {
+      if (letter == 'T') {
+        if (value != std::round(value) || value < 0 || value > 1e9) {
+          return Error(n, "T" + FormatNumber(value) + " is no tool number");
+        }
+        selected_tool_ = static_cast<int>(value);
+      }
+      if (letter == 'M' && value == 6) change = true;
+      if (letter == 'M' && value == 61) set = true;
+      if (letter == 'Q') q = value;
+    }
+    if (set && (q != std::round(q) || q < 0 || q > 1e9)) {
+      return Error(n, "M61 needs Q and a tool number, not Q" + FormatNumber(q));
+    }
+    if (!change && !set) return Status::Ok();
+    const int number = set ? static_cast<int>(q) : selected_tool_;
+    if (number < 0) return Error(n, "M6 with no tool selected (T)");
+    if (number == 0) {
+      current_tool_ = -1;  // T0: the spindle is empty
+      return Status::Ok();
+    }
+    ToolRecord tool;
+    tool.number = number;
+    tool.source_line = n;
+    path_->tools.push_back(tool);
+    current_tool_ = static_cast<int>(path_->tools.size()) - 1;
     return Status::Ok();
   }
 
@@ -619,6 +656,7 @@ class GcodeReader {
     pose.link = motion_ == 1 && link;
     pose.held = pending_break_ || codes.other || motion_ >= 2 || compensation_ || per_revolution_;
     pose.source_line = n;
+    pose.tool = current_tool_;
     const double a = position_[3], c = position_[4];
     if (style_ == GcodeStyle::kTcp) {
       pose.p_w_tip = Eigen::Vector3d(position_[0], position_[1], position_[2]);
@@ -686,6 +724,8 @@ class GcodeReader {
   // A block without a pose came after the last pose: the next one is held.
   bool pending_break_ = false;
   double feed_ = 0.0;  // as written: units/min, or 1/min in G93
+  int selected_tool_ = -1;  // the last T word
+  int current_tool_ = -1;   // index into path_->tools of the loaded tool
 };
 
 }  // namespace

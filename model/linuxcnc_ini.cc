@@ -280,4 +280,20 @@ Status ReadLinuxCncIni(const std::string& path, Machine* machine) {
   return ParseLinuxCncIni(in, path, folder, machine);
 }
 
+Status LinuxCncIniToolTable(const std::string& path, std::string* table) {
+  table->clear();
+  std::ifstream in(path);
+  if (!in) return Status::Error(path + ": cannot open the LinuxCNC INI file");
+  Ini ini;
+  Status s = Parse(in, path, &ini);
+  if (!s.ok()) return s;
+  const Entry* e = Find(ini, "EMCIO", "TOOL_TABLE");
+  if (e == nullptr || e->value.empty()) return Status::Ok();
+  const auto slash = path.find_last_of('/');
+  *table = e->value[0] == '/' || slash == std::string::npos
+               ? e->value
+               : path.substr(0, slash + 1) + e->value;
+  return Status::Ok();
+}
+
 }  // namespace tpopt

@@ -38,6 +38,10 @@ Status ReadLinuxCncIni(const std::string& path, Machine* machine);
 Status ParseLinuxCncIni(std::istream& in, const std::string& name,
                         const std::string& folder, Machine* machine);
 
+// The tool table the INI `path` names ([EMCIO] TOOL_TABLE, relative to the
+// INI's folder, as LinuxCNC resolves it), or empty when it names none.
+Status LinuxCncIniToolTable(const std::string& path, std::string* table);
+
 }  // namespace tpopt
 
 #endif  // TPOPT_MODEL_LINUXCNC_INI_H_
