@@ -644,6 +644,96 @@ TEST(TpoptCliTest, MsysBringsTheSurfaceIntoTheProgramsFrame) {
   EXPECT_NE(r.output.find("a second MSYS names another frame"), std::string::npos) << r.output;
 }
 
+// A G-code program that cuts the blade with two tools, T1 then T2, each a
+// DPO path of its own radius (R 4 over u < 0.5, R 2 over the rest): the tool
+// table sizes them, and both evaluate and smooth judge each move with its
+// own tool's cutter. Given one cutter (R 4) for both, T2's moves cut 2 mm in.
+TEST(TpoptCliTest, ToolTableSizesAGcodeProgramsTools) {
+  TempDir dir;
+  std::string program = "G21 G90 G17 G40 G49 G80\nG94\n";
+  for (int t = 0; t < 2; ++t) {
+    const std::string radius = t == 0 ? "4" : "2";
+    const std::string cls = dir.File("g" + radius + ".cls"), ngc = dir.File("g" + radius + ".ngc");
+    auto r = RunCommand(Tpopt("generate --surface=" + kBlade + " --out=" + cls +
+                              " --poses=40 --strategy=dpo --uv_distortion=0.02 --cutter_radius=" +
+                              radius + " --quiet"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    r = RunCommand(Tpopt("smooth --mode=none --in=" + cls + " --out=" + ngc + " --quiet"));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    program += "T" + std::to_string(t + 1) + " M6\n";
+    int move = 0;
+    for (std::string line : Lines(ngc)) {
+      if (line.rfind("G0 X", 0) != 0 && line.rfind("G1 X", 0) != 0) continue;
+      const bool mine = t == 0 ? move < 20 : move >= 20;
+      const bool first = t == 0 ? move == 0 : move == 20;
+      ++move;
+      if (!mine) continue;
+      if (first) line = "G0" + line.substr(2, line.find(" F") - 2) + "\nF1000";
+      program += line + "\n";
+    }
+  }
+  program += "M2\n";
+  const std::string in = dir.File("two_tools.ngc"), table = dir.File("tools.tbl");
+  std::ofstream(in) << program;
+  std::ofstream(table) << "; hand-written\nT1 P1 D8 Z50 ;8 mm end mill\nT2 P2 D4 Z40 ;4 mm\n";
+  const std::string report = dir.File("r.json");
+  auto worst = [](const nlohmann::json& m) {
+    return std::max(m["max_overcut_mm"].get<double>(), m["max_undercut_mm"].get<double>());
+  };
+  auto r = RunCommand(Tpopt("evaluate --in=" + in + " --surface=" + kBlade + " --tool_table=" +
+                            table + " --report=" + report + " --quiet"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  nlohmann::json j = ReadJson(report);
+  EXPECT_TRUE(j["cutter"]["per_tool"].get<bool>());
+  EXPECT_EQ(j["cutter"]["radius_mm"].get<double>(), 4.0);
+  const double input_worst = worst(j);
+  EXPECT_LT(input_worst, 0.2);
+  r = RunCommand(Tpopt("evaluate --in=" + in + " --surface=" + kBlade + " --tool_table=" + table +
+                       " --cutter_radius=4 --report=" + report + " --quiet"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_GT(ReadJson(report)["max_overcut_mm"].get<double>(), 1.5);
+  // High accuracy at 0.01 mm is refused at the end of T1's run, whose last
+  // pose the tool change holds as programmed: 0.015 mm into the blade at (u
+  // 0.48, v 1), where the input was 0.0126 (the end contact of issue 16).
+  for (const std::string mode : {"spline", "high_accuracy"}) {
+    const std::string out = dir.File(mode + ".ngc");
+    r = RunCommand(Tpopt("smooth --mode=" + mode + " --in=" + in + " --surface=" + kBlade +
+                         " --tool_table=" + table + " --out=" + out + " --report=" + report +
+                         " --quiet" + (mode == "high_accuracy" ? " --tolerance_mm=0.02" : "")));
+    ASSERT_EQ(r.exit_code, 0) << mode << ": " << r.output;
+    j = ReadJson(report);
+    EXPECT_TRUE(j["cutter"]["per_tool"].get<bool>());
+    std::printf("%s: max |dev| %.4f -> %.4f mm, rms %.4f -> %.4f mm (each move its own tool)\n",
+                mode.c_str(), worst(j["input"]), worst(j["output"]),
+                j["input"]["rms_deviation_mm"].get<double>(),
+                j["output"]["rms_deviation_mm"].get<double>());
+    EXPECT_LE(worst(j["output"]), worst(j["input"]) + 1e-9) << mode;
+    EXPECT_LE(j["output"]["rms_deviation_mm"].get<double>(),
+              j["input"]["rms_deviation_mm"].get<double>() + 1e-9)
+        << mode;
+    // The tool changes and everything but the cutting moves as written.
+    const std::vector<std::string> a = Lines(in), b = Lines(out);
+    for (const std::string& line : a) {
+      if (line.rfind("G1 X", 0) == 0) continue;
+      EXPECT_NE(std::find(b.begin(), b.end(), line), b.end()) << line;
+    }
+  }
+  // A bad table line: refused naming the file, the line and the word.
+  std::ofstream(table) << "T1 P1 D8\nT2 P2 Dx4\n";
+  r = RunCommand(Tpopt("evaluate --in=" + in + " --surface=" + kBlade + " --tool_table=" + table +
+                       " --report=" + report));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("tools.tbl:2: word 'Dx4': 'x4' is not a number"), std::string::npos)
+      << r.output;
+  // A tool the table lacks: refused naming the program's line.
+  std::ofstream(table) << "T1 P1 D8\n";
+  r = RunCommand(Tpopt("evaluate --in=" + in + " --tool_table=" + table + " --report=" + report));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("two_tools.ngc: line 25: tool T2 is not in the tool table"),
+            std::string::npos)
+      << r.output;
+}
+
 const std::string kPencilSurface = SourcePath("data/pencil/surface_120x120x55.json");
 const std::string kPencilCurves = SourcePath("data/pencil/flower_guides.json");
 
