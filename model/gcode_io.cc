@@ -265,6 +265,7 @@ struct BlockCodes {
   bool g53 = false;
   bool all_unknown_after = false;  // offsets, tool change, home moves
   bool z_unknown_after = false;    // tool length offset changed
+  int length_offset = 0;           // 430, 431, 432 or 490 (G43, G43.1, G43.2, G49)
   bool ends = false;               // M2, M30
 };
 
@@ -385,6 +386,33 @@ class GcodeReader {
     return Status::Ok();
   }
 
+  // G43 [H], G43.1 Z, G43.2 H, G49: the offset the next moves carry
+  // (ToolPose::length_offset_*).
+  Status LengthOffset(int g, const std::vector<std::pair<char, double>>& words, int n) {
+    double h = -1, z = 0;
+    for (const auto& [letter, value] : words) {
+      if (letter == 'H') h = value;
+      if (letter == 'Z') z = value * scale_;
+    }
+    if (h != -1 && (h != std::round(h) || h < 0 || h > 1e9)) {
+      return Error(n, "H" + FormatNumber(h) + " is no tool number");
+    }
+    if (g == 490) {
+      length_offset_tool_ = 0;
+      length_offset_mm_ = 0.0;
+    } else if (g == 430) {
+      const int loaded = current_tool_ < 0 ? 0 : path_->tools[current_tool_].number;
+      length_offset_tool_ = h >= 0 ? static_cast<int>(h) : loaded;
+      length_offset_mm_ = 0.0;
+    } else if (g == 431) {
+      length_offset_tool_ = 0;
+      length_offset_mm_ = z;
+    } else {
+      length_offset_tool_ = -1;
+    }
+    return Status::Ok();
+  }
+
   Status GCode(double value, int n, BlockCodes* codes) {
     const int g = static_cast<int>(std::lround(value * 10));  // G38.2 -> 382
     if (std::abs(value * 10 - g) > 1e-6)
@@ -458,6 +486,8 @@ class GcodeReader {
       case 432:
       case 490:
         codes->z_unknown_after = true;
+        codes->length_offset = g;
+        if (g == 431) codes->axis_data = true;  // G43.1's axis words are the offset
         return Status::Ok();
       case 400:
         compensation_ = false;
@@ -614,6 +644,10 @@ class GcodeReader {
     }
     if (codes.all_unknown_after) std::fill(known_, known_ + kAxes, false);
     if (codes.z_unknown_after) known_[2] = false;
+    if (codes.length_offset != 0) {
+      s = LengthOffset(codes.length_offset, words, n);
+      if (!s.ok()) return s;
+    }
     if (codes.ends) ended_ = true;
     return Status::Ok();
   }
@@ -657,6 +691,8 @@ class GcodeReader {
     pose.held = pending_break_ || codes.other || motion_ >= 2 || compensation_ || per_revolution_;
     pose.source_line = n;
     pose.tool = current_tool_;
+    pose.length_offset_tool = length_offset_tool_;
+    pose.length_offset_mm = length_offset_mm_;
     const double a = position_[3], c = position_[4];
     if (style_ == GcodeStyle::kTcp) {
       pose.p_w_tip = Eigen::Vector3d(position_[0], position_[1], position_[2]);
@@ -726,6 +762,8 @@ class GcodeReader {
   double feed_ = 0.0;  // as written: units/min, or 1/min in G93
   int selected_tool_ = -1;  // the last T word
   int current_tool_ = -1;   // index into path_->tools of the loaded tool
+  int length_offset_tool_ = 0;     // ToolPose::length_offset_tool
+  double length_offset_mm_ = 0.0;  // G43.1's offset, mm
 };
 
 }  // namespace

@@ -99,6 +99,22 @@ Status SizeToolsFromTable(const LinuxCncToolTable& table, const std::string& tab
       tool.cutter = Cutter{it->second.diameter_mm / 2, flute_length_mm, 0.0};
     }
   }
+  for (ToolPose& pose : path->poses) {
+    if (pose.length_offset_tool == -1) {
+      return Status::Error("line " + std::to_string(pose.source_line) +
+                           ": the move is under G43.2, an added tool length offset, which "
+                           "tpopt does not apply");
+    }
+    if (pose.length_offset_tool == 0) continue;
+    const auto it = table.find(pose.length_offset_tool);
+    if (it == table.end()) {
+      return Status::Error("line " + std::to_string(pose.source_line) + ": G43 H" +
+                           std::to_string(pose.length_offset_tool) + ": tool T" +
+                           std::to_string(pose.length_offset_tool) + " is not in the tool table " +
+                           table_name);
+    }
+    pose.length_offset_mm += it->second.length_offset_mm;
+  }
   for (const ToolPose& pose : path->poses) {
     if (pose.rapid || pose.tool < 0) continue;
     if (path->tools[pose.tool].cutter) path->cutter = path->tools[pose.tool].cutter;

@@ -255,15 +255,19 @@ void Machine::ToWorkpiece(const JointVector& joints, Eigen::Vector3d* p_w_tip,
 Status Machine::CheckTravel(const ToolPath& path, const std::vector<JointVector>& joints) const {
   CHECK_EQ(joints.size(), path.poses.size());
   for (size_t i = 0; i < joints.size(); ++i) {
+    // A tool length offset raises joint Z by itself (ToolPose::length_offset_mm).
+    const double offset = path.poses[i].length_offset_mm;
     for (int a = 0; a < 5; ++a) {
       const AxisLimits& travel = limits[a];
-      if (travel.InTravel(joints[i][a])) continue;
+      const double joint = joints[i][a] + (a == kZ ? offset : 0.0);
+      if (travel.InTravel(joint)) continue;
       // Rotary joints are radians inside; the machine file gives degrees.
       const double scale = a >= kA ? kRadToDeg : 1.0;
       std::ostringstream err;
       err << "pose " << i << " (line " << path.poses[i].source_line << "): " << kAxisNames[a]
-          << " = " << joints[i][a] * scale << " is outside the travel [" << travel.min * scale
-          << ", " << travel.max * scale << "]";
+          << " = " << joint * scale << " is outside the travel [" << travel.min * scale << ", "
+          << travel.max * scale << "]";
+      if (a == kZ && offset != 0.0) err << " (with the tool length offset of " << offset << " mm)";
       return Status::Error(err.str());
     }
   }

@@ -163,7 +163,8 @@ class Machine {
 
   // Fails, naming the first pose (index and source line), the axis, its
   // value and the travel, when a joint vector of `joints` (one per pose of
-  // `path`, from AssignJoints) lies outside an axis' travel.
+  // `path`, from AssignJoints) lies outside an axis' travel; joint Z with
+  // the pose's tool length offset added (ToolPose::length_offset_mm).
   Status CheckTravel(const ToolPath& path, const std::vector<JointVector>& joints) const;
 
   static constexpr double kSingularSinA = 1e-6;

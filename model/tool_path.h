@@ -52,6 +52,16 @@ struct ToolPose {
   // Index into ToolPath::tools of the tool that makes this move; -1 when
   // the source loads none.
   int tool = -1;
+  // G-code: the tool length offset in effect for this move (G43 H, G43.1,
+  // G49), mm. LinuxCNC adds it to the programmed Z, and on xyzac-trt-kins
+  // wired as the sims are (tool-offset from motion.tooloffset.z) the tip's
+  // path in the table frame does not depend on it: only joint Z is this much
+  // higher (docs/ARCHITECTURE.md, "Tool length offsets"), which
+  // Machine::CheckTravel adds. length_offset_tool is the tool whose table Z
+  // it adds (H, or the loaded tool for G43 alone; 0 none, -1 a G43.2 sum
+  // tpopt does not resolve); SizeToolsFromTable adds that Z.
+  int length_offset_tool = 0;
+  double length_offset_mm = 0.0;
 };
 
 // True when the move into `pose` is kept as programmed (a rapid, a link or a

@@ -2,11 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "model/gcode_io.h"
 #include "model/linuxcnc_ini.h"
+#include "model/machine.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -140,6 +142,76 @@ TEST(LinuxCncToolTableTest, GcodeToolsAreLoadedAndSizedFromTheTable) {
   EXPECT_EQ(p2.tools[0].number, 3);
   EXPECT_EQ(p2.poses.front().tool, 0);
   EXPECT_EQ(p2.poses.back().tool, -1);
+}
+
+// What G43 H means on xyzac-trt-kins wired as the sims are (tool-offset
+// from motion.tooloffset.z): LinuxCNC sends p + L ez to a kinematics whose
+// tool offset is L, and the joints it gets are those of the tip p with no
+// offset, L higher in Z. So the tip's path in the table frame does not
+// depend on L; only joint Z does. Checked on tpopt's copy of the inverse.
+TEST(LinuxCncToolTableTest, ALengthOffsetOnlyRaisesJointZ) {
+  KinematicParams with, without;
+  without.rotary_pivot_mm = Eigen::Vector3d(10, -20, 30);
+  without.y_offset_mm = 5;
+  without.z_offset_mm = 20;
+  with = without;
+  const double lengths[] = {0.0, 15.0, 123.4};
+  for (double length : lengths) {
+    with.tool_length_mm = length;
+    for (int k = 0; k < 20; ++k) {
+      const Eigen::Vector3d p = Eigen::Vector3d::Random() * 100;
+      const double a = 1.5 * std::sin(k), c = 3.0 * std::cos(3 * k);
+      const Eigen::Vector3d joints =
+          WorkpieceToJoints<double>(with, p + Eigen::Vector3d(0, 0, length), a, c);
+      const Eigen::Vector3d tip_joints = WorkpieceToJoints<double>(without, p, a, c);
+      EXPECT_NEAR((joints - tip_joints - Eigen::Vector3d(0, 0, length)).norm(), 0.0, 1e-9);
+    }
+  }
+}
+
+// G43 H takes the table's Z for the moves after it (G49 ends it), and the
+// travel check raises joint Z by it: on the sim machine a 1000 mm tool does
+// not fit, and the message says why.
+TEST(LinuxCncToolTableTest, G43OffsetsAreTheTablesAndJudgeTheZTravel) {
+  const std::string ini = std::string(kTrtFolder) + "xyzac-trt.ini";
+  if (!FileExists(ini)) GTEST_SKIP() << "LinuxCNC's sample configs are not installed";
+  Machine machine;
+  ASSERT_TRUE(ReadLinuxCncIni(ini, &machine).ok());
+  ToolPath path;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(ReadGcode(SourcePath("tests/data/gcode/g53_tool_change.ngc"), machine,
+                        GcodeStyle::kTcp, &path, &warnings)
+                  .ok());
+  LinuxCncToolTable table;
+  ASSERT_TRUE(ParseText("T1 P1 D8 Z10\nT2 P2 D4 Z1000\n", &table).ok());
+  ASSERT_TRUE(SizeToolsFromTable(table, "t.tbl", 30.0, &path).ok());
+  for (const ToolPose& p : path.poses) {
+    EXPECT_EQ(p.length_offset_tool, p.source_line < 40 ? 1 : 2) << p.source_line;
+    EXPECT_EQ(p.length_offset_mm, p.source_line < 40 ? 10.0 : 1000.0) << p.source_line;
+  }
+  std::vector<JointVector> joints;
+  ASSERT_TRUE(machine.AssignJoints(path, &joints).ok());
+  Status s = machine.CheckTravel(path, joints);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("(line 45): Z = "), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("with the tool length offset of 1000 mm"), std::string::npos)
+      << s.message();
+  for (ToolPose& p : path.poses) p.length_offset_mm = 0.0;
+  EXPECT_TRUE(machine.CheckTravel(path, joints).ok());
+  // H of a tool the table lacks: refused naming the line.
+  ToolPath again;
+  ASSERT_TRUE(ReadGcode(SourcePath("tests/data/gcode/g53_tool_change.ngc"), machine,
+                        GcodeStyle::kTcp, &again, &warnings)
+                  .ok());
+  ASSERT_TRUE(ParseText("T1 P1 D8 Z10\nT2 P2 D4\n", &table).ok());
+  for (ToolPose& p : again.poses) {
+    if (p.length_offset_tool == 2) p.length_offset_tool = 7;
+  }
+  s = SizeToolsFromTable(table, "t.tbl", 30.0, &again);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find(": G43 H7: tool T7 is not in the tool table t.tbl"),
+            std::string::npos)
+      << s.message();
 }
 
 }  // namespace
