@@ -82,7 +82,11 @@ Status WriteGcodeProgram(const std::string& file, const ToolPath& input, const T
 // the style at the start. Refused, naming the line and the construct:
 // words for axes an A/C machine lacks (B U V W), o-words, block delete,
 // unknown G codes, parameters read before the program sets them where
-// LinuxCNC would read machine state.
+// LinuxCNC would read machine state. Tools: T selects, M6 loads (T0 empties
+// the spindle) and M61 Q sets the loaded tool; each load is a ToolRecord
+// (unsized: the tool table sizes it, model/linuxcnc_tool_table.h) and each
+// pose takes the tool loaded before it, with its tool length offset (G43
+// [H], G43.1 Z, G43.2, G49; ToolPose::length_offset_*).
 Status ReadGcode(const std::string& file, const Machine& machine, GcodeStyle style,
                  ToolPath* path, std::vector<std::string>* warnings);
 Status ReadGcodeStream(std::istream& in, const std::string& name, const Machine& machine,

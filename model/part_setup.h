@@ -12,7 +12,9 @@
 //
 // NX's MSYS and APT's CSYS records state where the program's frame lies in
 // the CAD model, which the machine never sees: the moves are already in
-// that frame, so tpopt reads them as P and passes the records through.
+// that frame, so tpopt reads them as P and passes the records through; a
+// surface from the CAD model is brought into P by the MSYS
+// (model/program_frame.h) and placed with the moves.
 #ifndef TPOPT_MODEL_PART_SETUP_H_
 #define TPOPT_MODEL_PART_SETUP_H_
 

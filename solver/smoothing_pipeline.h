@@ -7,7 +7,10 @@
 // tolerance after tightening the solve, or breaks more axis limits than its
 // start and the input (without one: is worse than its start); the runs
 // made worse on peak d2A/ds2 or d2C/ds2 put back as programmed; feed
-// scheduling; metrics of the output.
+// scheduling; metrics of the output. With settings.deviation.cutter_per_tool
+// and a surface, each tool's stretch of the path (the tool changes are kept
+// moves, so no run crosses one) is smoothed with its own cutter and the
+// whole judged with each move's (docs/ARCHITECTURE.md, "Tools").
 #ifndef TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
 #define TPOPT_SOLVER_SMOOTHING_PIPELINE_H_
 
