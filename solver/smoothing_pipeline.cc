@@ -549,7 +549,11 @@ Status SmoothToolByTool(const SmoothingJob& job, const SmoothingSettings& settin
     if (!last) {
       // The next piece's first pose, kept as programmed: it starts that
       // piece's output.
-      CHECK(!part.output.poses.empty() && IsPositioningMove(part.output.poses.back()));
+      if (part.output.poses.empty() || !IsPositioningMove(part.output.poses.back())) {
+        return Fail(SmoothingFailure::kSolver,
+                    "the smoothed stretch of a tool does not end at the next tool's first pose",
+                    failure);
+      }
       part.output.poses.pop_back();
       guess.poses.pop_back();
     }
