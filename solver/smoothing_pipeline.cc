@@ -424,14 +424,18 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                std::max(start_metrics.motion.limit_violations,
                         result->input_metrics.motion.limit_violations));
       if (worse) {
-        return Fail(SmoothingFailure::kSolver,
-                    held_to_tolerance
-                        ? "the optimised path breaks more axis limits than its starting point "
-                          "and the input, and is no nearer the surface than its start (try "
-                          "other weights)"
-                        : "the optimised path is worse than its starting point on deviation "
-                          "and limits (try other weights)",
-                    failure);
+        std::ostringstream why;
+        why << (held_to_tolerance
+                    ? "the optimised path breaks more axis limits than its starting point "
+                      "and the input, and is no nearer the surface than its start (try "
+                      "other weights)"
+                    : "the optimised path is worse than its starting point on deviation "
+                      "and limits (try other weights)")
+            << ": " << out_metrics.motion.limit_violations << " limit violations against "
+            << start_metrics.motion.limit_violations << " (start) and "
+            << result->input_metrics.motion.limit_violations << " (input), worst at pose "
+            << out_metrics.motion.worst_violation_pose;
+        return Fail(SmoothingFailure::kSolver, why.str(), failure);
       }
       break;
     }
