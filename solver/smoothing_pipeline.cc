@@ -98,23 +98,37 @@ void GrowActiveSet(const DeviationReport& out, const std::vector<size_t>& beyond
   *active = std::move(grown);
 }
 
-// The peak |d2A/ds2| and |d2C/ds2| of each cutting run of `path` (runs as
-// RunEnd splits them), over the samples at the run's poses.
+// What the put-back judges a cutting run by (runs as RunEnd splits them):
+// its peak |d2A/ds2| and |d2C/ds2| over the samples at its poses, and the
+// axis-limit violations of the run evaluated alone from the pose before it
+// (so a run's count does not depend on the runs around it).
+struct RunFigures {
+  std::array<double, 2> peak_d2 = {0.0, 0.0};
+  int limit_violations = 0;
+};
+
 Status RunPeaks(const ToolPath& path, const Machine& machine, double default_feed_mm_per_min,
-                std::vector<std::array<double, 2>>* peaks) {
+                std::vector<RunFigures>* runs) {
   std::vector<JointVector> joints;
   Status s = machine.AssignJoints(path, &joints);
   if (!s.ok()) return s;
   const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
-  peaks->clear();
+  MotionOptions motion;
+  motion.default_feed_mm_per_min = default_feed_mm_per_min;
+  runs->clear();
   for (size_t first = 0; first < path.poses.size();) {
     const size_t end = RunEnd(path, first);
-    std::array<double, 2> peak = {0.0, 0.0};
+    RunFigures run;
     for (size_t i = first; i < end; ++i) {
-      peak[0] = std::max(peak[0], SecondDerivativePerMm2(path, joints, m, i, kA));
-      peak[1] = std::max(peak[1], SecondDerivativePerMm2(path, joints, m, i, kC));
+      run.peak_d2[0] = std::max(run.peak_d2[0], SecondDerivativePerMm2(path, joints, m, i, kA));
+      run.peak_d2[1] = std::max(run.peak_d2[1], SecondDerivativePerMm2(path, joints, m, i, kC));
     }
-    peaks->push_back(peak);
+    const size_t from = first > 0 ? first - 1 : 0;
+    ToolPath alone = WithoutPoses(path);
+    alone.poses.assign(path.poses.begin() + from, path.poses.begin() + end);
+    const std::vector<JointVector> alone_joints(joints.begin() + from, joints.begin() + end);
+    run.limit_violations = EvaluateMotion(machine, alone, alone_joints, motion).limit_violations;
+    runs->push_back(run);
     first = end;
   }
   return Status::Ok();
@@ -144,18 +158,24 @@ ToolPath ComposeRuns(const ToolPath& input, const ToolPath& output, const std::v
   return composed;
 }
 
+// What a run of the output may not be worse than the input's on.
+struct NoWorseOn {
+  bool d2 = true;       // peak d2A/ds2 and d2C/ds2
+  bool limits = false;  // axis-limit violations
+};
+
 // Puts back as programmed every run of `output` whose peak d2A/ds2 or
-// d2C/ds2 is higher than that of the same run of `input`, so that the
-// program as a whole is no worse on either; `back` (one flag a run) says
-// which, and may come in with runs already put back. A run's first sample
-// also sees the last pose of the run before, which a method may move: a run
-// put back that is still worse puts its predecessor back too, until none is
-// (at worst the whole input). False, with nothing changed, when the two
-// paths' runs do not pair up (which no method makes) or joints cannot be
-// assigned.
+// d2C/ds2 (with `on.d2`) or limit violations (with `on.limits`) exceed
+// those of the same run of `input`, so that the program as a whole is no
+// worse on either; `back` (one flag a run) says which, and may come in with
+// runs already put back. A run's first sample also sees the last pose of the
+// run before, which a method may move: a run put back that is still worse
+// puts its predecessor back too, until none is (at worst the whole input).
+// False, with nothing changed, when the two paths' runs do not pair up
+// (which no method makes) or joints cannot be assigned.
 bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double default_feed_mm_per_min,
-                     ToolPath* output, std::vector<bool>* back) {
-  std::vector<std::array<double, 2>> before, after;
+                     NoWorseOn on, ToolPath* output, std::vector<bool>* back) {
+  std::vector<RunFigures> before, after;
   if (!RunPeaks(input, machine, default_feed_mm_per_min, &before).ok() ||
       !RunPeaks(*output, machine, default_feed_mm_per_min, &after).ok() ||
       before.size() != after.size()) {
@@ -170,7 +190,10 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
   for (bool changed = true; changed;) {
     changed = false;
     for (size_t r = 0; r < runs; ++r) {
-      if (after[r][0] <= before[r][0] + kSlack && after[r][1] <= before[r][1] + kSlack) continue;
+      const bool worse_d2 = after[r].peak_d2[0] > before[r].peak_d2[0] + kSlack ||
+                            after[r].peak_d2[1] > before[r].peak_d2[1] + kSlack;
+      const bool worse_limits = after[r].limit_violations > before[r].limit_violations;
+      if (!(on.d2 && worse_d2) && !(on.limits && worse_limits)) continue;
       if (!(*back)[r]) {
         (*back)[r] = changed = true;
       } else if (r > 0 && !(*back)[r - 1]) {
@@ -206,12 +229,13 @@ using Evaluator = std::function<Status(const std::string& what, const ToolPath& 
 constexpr double kSameMovesSlackMm = 1e-6;
 
 Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per_min,
-                             double tolerance_mm, const Evaluator& evaluate,
+                             NoWorseOn on, double tolerance_mm, const Evaluator& evaluate,
                              SmoothingResult* result) {
   std::vector<bool> back;
   for (;;) {
     ToolPath composed = result->output;
-    if (!KeepRunsNoWorse(*job.input, *job.machine, default_feed_mm_per_min, &composed, &back)) {
+    if (!KeepRunsNoWorse(*job.input, *job.machine, default_feed_mm_per_min, on, &composed,
+                         &back)) {
       return Status::Ok();
     }
     const int kept = static_cast<int>(std::count(back.begin(), back.end(), true));
@@ -327,7 +351,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     std::vector<bool> back;
     if (settings.keep_runs_no_worse &&
         KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
-                        &result->output, &back)) {
+                        NoWorseOn(), &result->output, &back)) {
       result->runs_kept_as_input = static_cast<int>(std::count(back.begin(), back.end(), true));
     }
     s = finish_output();
@@ -408,39 +432,33 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
           continue;
         }
       }
-      // The path to be returned. Held to the tolerance it leaves no grid
-      // point beyond both the tolerance and the input, a pointwise promise
-      // that the start, itself beyond the tolerance where a noisy input
-      // happened to be within it, need not keep: judged against the
-      // start's max |dev| alone, a solve that met it was refused. So there
-      // it is worse only when it breaks more axis limits than the start and
-      // the input and is not nearer the surface than the start.
-      const PathMetrics& out_metrics = result->output_at_input_feed;
-      const PathMetrics& start_metrics = result->initial_guess_metrics;
-      const bool worse =
-          IsWorseThan(out_metrics, start_metrics) &&
-          (!held_to_tolerance ||
-           out_metrics.motion.limit_violations >
-               std::max(start_metrics.motion.limit_violations,
-                        result->input_metrics.motion.limit_violations));
-      if (worse) {
-        std::ostringstream why;
-        why << (held_to_tolerance
-                    ? "the optimised path breaks more axis limits than its starting point "
-                      "and the input, and is no nearer the surface than its start (try "
-                      "other weights)"
-                    : "the optimised path is worse than its starting point on deviation "
-                      "and limits (try other weights)")
-            << ": " << out_metrics.motion.limit_violations << " limit violations against "
-            << start_metrics.motion.limit_violations << " (start) and "
-            << result->input_metrics.motion.limit_violations << " (input), worst at pose "
-            << out_metrics.motion.worst_violation_pose;
-        return Fail(SmoothingFailure::kSolver, why.str(), failure);
-      }
       break;
     }
-    if (settings.keep_runs_no_worse) {
-      s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min,
+    // The path to be returned. Held to the tolerance it leaves no grid
+    // point beyond both the tolerance and the input, a pointwise promise
+    // that the start, itself beyond the tolerance where a noisy input
+    // happened to be within it, need not keep: judged against the start's
+    // max |dev| alone, a solve that met it was refused. So there it is worse
+    // only when it breaks more axis limits than the start and the input and
+    // is not nearer the surface than the start.
+    const auto worse_than_start = [&]() {
+      const PathMetrics& out_metrics = result->output_at_input_feed;
+      const PathMetrics& start_metrics = result->initial_guess_metrics;
+      return IsWorseThan(out_metrics, start_metrics) &&
+             (!held_to_tolerance ||
+              out_metrics.motion.limit_violations >
+                  std::max(start_metrics.motion.limit_violations,
+                           result->input_metrics.motion.limit_violations));
+    };
+    // A worse result is not refused for limits the input kept: the runs
+    // that break more limits than the input's go back as programmed, with
+    // the d2 rule below (at worst the whole input, which is never worse
+    // than itself); only what is still worse then is refused.
+    NoWorseOn no_worse;
+    no_worse.d2 = settings.keep_runs_no_worse;
+    no_worse.limits = worse_than_start();
+    if (no_worse.d2 || no_worse.limits) {
+      s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min, no_worse,
                                 held_to_tolerance ? options.tolerance_mm : 0.0, evaluate, result);
     }
     if (!s.ok()) {
@@ -448,6 +466,21 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                   "the smoothed path with runs kept as programmed does not fit the machine (" +
                       s.message() + ")",
                   failure);
+    }
+    if (worse_than_start()) {
+      const PathMetrics& out_metrics = result->output_at_input_feed;
+      std::ostringstream why;
+      why << (held_to_tolerance
+                  ? "the optimised path breaks more axis limits than its starting point "
+                    "and the input, and is no nearer the surface than its start (try "
+                    "other weights)"
+                  : "the optimised path is worse than its starting point on deviation "
+                    "and limits (try other weights)")
+          << ": " << out_metrics.motion.limit_violations << " limit violations against "
+          << result->initial_guess_metrics.motion.limit_violations << " (start) and "
+          << result->input_metrics.motion.limit_violations << " (input), worst at pose "
+          << out_metrics.motion.worst_violation_pose;
+      return Fail(SmoothingFailure::kSolver, why.str(), failure);
     }
   }
   result->output_metrics = result->output_at_input_feed;

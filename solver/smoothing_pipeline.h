@@ -89,8 +89,10 @@ struct SmoothingResult {
   int tolerance_points = 0;
   // Runs put back as programmed because the method made their peak d2A/ds2
   // or d2C/ds2 higher than the input's (neither mode returns a program
-  // worse on either), or, in high-accuracy mode with a surface, because a
-  // neighbour put back left the mix beyond the tolerance.
+  // worse on either), or, in high-accuracy mode, because the solve broke
+  // more axis limits than its start and the input and these runs more than
+  // the input's (put back rather than refused), or, with a surface, because
+  // a neighbour put back left the mix beyond the tolerance.
   int runs_kept_as_input = 0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;

@@ -142,5 +142,32 @@ TEST(HighAccuracyDenseRunsTest, DenseRunsBesideASharpTurnComeOutNoWorseThanTheyC
   }
 }
 
+// Where the solve still breaks more limits than its start and the input,
+// the runs that do go back as programmed instead of the program being
+// refused. Here a link (F20000 between two dense runs) stops the
+// smoothness stencils, so the free pose before it follows the tilt the
+// solve gives the run (from the corner at its start) and the link move then
+// turns A faster than the input's did: with the d2 rule off, only the limits
+// rule keeps it. Refused with exit 3 before.
+TEST(HighAccuracyDenseRunsTest, RunsThatBreakMoreLimitsGoBackAsProgrammedNotRefused) {
+  std::vector<std::string> moves;
+  for (int i = 0; i < 40; ++i) moves.push_back(Cut(i * 0.05, 0));
+  moves.push_back("G1 X10 Y0 Z0 A10 C0 F20000");
+  for (int i = 1; i < 40; ++i) moves.push_back(Cut(10 + i * 0.05, 0) + (i == 1 ? " F500" : ""));
+  testing::TempDir dir;
+  const std::string in = dir.File("link.ngc"), out = dir.File("out.ngc");
+  const std::string report = dir.File("report.json");
+  std::ofstream(in) << Program(moves, 0.0);
+  const auto r = testing::RunCommand(
+      testing::TpoptBinary() + " smooth --mode=high_accuracy --in=" + in + " --out=" + out +
+      " --cutter_radius=3 --quiet --keep_runs_no_worse=false --report=" + report +
+      " --machine=" + testing::SourcePath(kMachine));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = testing::ReadJson(report);
+  EXPECT_GT(j["runs_kept_as_input"].get<int>(), 0);
+  EXPECT_LE(j["output_at_input_feed"]["limit_violations"].get<int>(),
+            j["input"]["limit_violations"].get<int>());
+}
+
 }  // namespace
 }  // namespace tpopt
