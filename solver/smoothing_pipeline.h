@@ -94,6 +94,10 @@ struct SmoothingResult {
   // the input's (put back rather than refused), or, with a surface, because
   // a neighbour put back left the mix beyond the tolerance.
   int runs_kept_as_input = 0;
+  // High accuracy with a surface: solves repeated with the smoothness
+  // weights raised because a run came out worse on peak d2 than the input's
+  // (each kept only if held to the tolerance).
+  int stiffer_solves = 0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;
   FeedScheduleReport feed;
