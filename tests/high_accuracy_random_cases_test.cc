@@ -61,22 +61,40 @@ std::array<double, 2> PeakSecond(const Machine& machine, const ToolPath& path) {
   return {m.axes[kA].peak_second_derivative_per_mm2, m.axes[kC].peak_second_derivative_per_mm2};
 }
 
-class HighAccuracyRandomCasesTest : public ::testing::TestWithParam<unsigned> {};
-
-TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
+bool MakeCase(unsigned seed, RandomCase* c) {
   RandomCaseOptions options;
   options.poses = kPoses;
-  RandomCase c;
-  ASSERT_TRUE(MakeRandomCase(GetParam(), options, SharedMachines(), &c).ok());
-  SCOPED_TRACE(c.description);
-  if (!c.fits_machine) GTEST_SKIP() << "the input does not fit the machine: " << c.fit_note;
+  return MakeRandomCase(seed, options, SharedMachines(), c).ok();
+}
 
+// High accuracy as the issue's targets judge it: TCP motion, the input's
+// covered range.
+Status Smooth(const RandomCase& c, SmoothingResult* result) {
   SmoothingSettings settings;
   settings.mode = SmoothingMode::kHighAccuracy;
   settings.deviation.interpolation = Interpolation::kTcp;
   settings.judge_on_input_range = true;
+  return testing::SmoothRandomCase(c, settings, result);
+}
+
+// The case of `seed`, which must fit its machine, smoothed; a fatal
+// failure if either step fails.
+void MakeAndSmooth(unsigned seed, RandomCase* c, SmoothingResult* result) {
+  ASSERT_TRUE(MakeCase(seed, c));
+  ASSERT_TRUE(c->fits_machine) << c->description;
+  const Status s = Smooth(*c, result);
+  ASSERT_TRUE(s.ok()) << s.message() << "\n" << c->description;
+}
+
+class HighAccuracyRandomCasesTest : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
+  RandomCase c;
+  ASSERT_TRUE(MakeCase(GetParam(), &c));
+  SCOPED_TRACE(c.description);
+  if (!c.fits_machine) GTEST_SKIP() << "the input does not fit the machine: " << c.fit_note;
   SmoothingResult result;
-  const Status s = testing::SmoothRandomCase(c, settings, &result);
+  const Status s = Smooth(c, &result);
   ASSERT_TRUE(s.ok()) << s.message();
 
   double u_min = 0, u_max = 0;
@@ -121,26 +139,16 @@ TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
 // then finds no point beyond both the tolerance and the input.
 TEST(HighAccuracyRandomCasesPutBackTest, RunsGoBackWhereTheToleranceRoundsLeavePointsBeyond) {
   for (unsigned seed : {1u, 22u}) {
-    RandomCaseOptions options;
-    options.poses = kPoses;
     RandomCase c;
-    ASSERT_TRUE(MakeRandomCase(seed, options, SharedMachines(), &c).ok());
-    SCOPED_TRACE(c.description);
-    ASSERT_TRUE(c.fits_machine);
-    SmoothingSettings settings;
-    settings.mode = SmoothingMode::kHighAccuracy;
-    settings.deviation.interpolation = Interpolation::kTcp;
-    settings.judge_on_input_range = true;
     SmoothingResult result;
-    const Status s = testing::SmoothRandomCase(c, settings, &result);
-    ASSERT_TRUE(s.ok()) << s.message();
+    ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(seed, &c, &result));
     EXPECT_GT(result.runs_kept_as_input, 0);
     double u_min = 0, u_max = 0;
     ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
     const DeviationReport in = Brute(c, c.cam_path, u_min, u_max);
     const DeviationReport out = Brute(c, result.output, u_min, u_max);
     ASSERT_EQ(in.deviation_mm.size(), out.deviation_mm.size());
-    const double tolerance_mm = settings.high_accuracy.tolerance_mm;
+    const double tolerance_mm = HighAccuracyOptions().tolerance_mm;
     for (size_t k = 0; k < out.deviation_mm.size(); ++k) {
       const double d = std::abs(out.deviation_mm[k]);
       EXPECT_TRUE(d <= tolerance_mm || d <= std::abs(in.deviation_mm[k]) + 1e-6)
@@ -156,19 +164,9 @@ TEST(HighAccuracyRandomCasesPutBackTest, RunsGoBackWhereTheToleranceRoundsLeaveP
 // clean DPO path's max |dev|; one stiffer solve brings it to 0.25 x with no
 // run put back.
 TEST(HighAccuracyRandomCasesPutBackTest, AStifferSolveKeepsTheRunInsteadOfPuttingTheInputBack) {
-  RandomCaseOptions options;
-  options.poses = kPoses;
   RandomCase c;
-  ASSERT_TRUE(MakeRandomCase(30u, options, SharedMachines(), &c).ok());
-  SCOPED_TRACE(c.description);
-  ASSERT_TRUE(c.fits_machine);
-  SmoothingSettings settings;
-  settings.mode = SmoothingMode::kHighAccuracy;
-  settings.deviation.interpolation = Interpolation::kTcp;
-  settings.judge_on_input_range = true;
   SmoothingResult result;
-  const Status s = testing::SmoothRandomCase(c, settings, &result);
-  ASSERT_TRUE(s.ok()) << s.message();
+  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(30u, &c, &result));
   EXPECT_GE(result.stiffer_solves, 1);
   EXPECT_EQ(result.runs_kept_as_input, 0);
   double u_min = 0, u_max = 0;
