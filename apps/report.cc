@@ -105,6 +105,7 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                       {"max_angle_change_deg", result.spline.max_angle_change_deg},
                       {"pole_crossings", result.spline.pole_crossings}};
   report["runs_kept_as_input"] = result.runs_kept_as_input;
+  report["stiffer_solves"] = result.stiffer_solves;
   report["feed_schedule"] = {{"passes", result.feed.passes},
                              {"moves_slowed", result.feed.moves_slowed},
                              {"moves_raised", result.feed.moves_raised},

@@ -92,7 +92,8 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
   }
   if (result.runs_kept_as_input > 0) {
     std::printf("  %d cutting runs kept as programmed: smoothing made their peak d2A/ds2 or "
-                "d2C/ds2 higher\n",
+                "d2C/ds2 higher (in high accuracy also: broke more axis limits, or left "
+                "points beyond the tolerance)\n",
                 result.runs_kept_as_input);
   }
   if (result.feed.moves_slowed > 0) {

@@ -98,6 +98,10 @@ Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
     return row;
   }
   row.outcome = "ok";
+  // What shaped the result: runs the never-worse rule put back as the
+  // input's (with the input's deviation), and solves repeated stiffer.
+  row.message = "runs kept as input " + std::to_string(result.runs_kept_as_input) +
+                ", stiffer solves " + std::to_string(result.stiffer_solves);
   const MotionReport& out = result.output_metrics.motion;
   row.dev_ratio = Ratio(WorstDeviationMm(result.output_metrics), WorstDeviationMm(dpo));
   row.a_ratio = Ratio(out.axes[kA].peak_second_derivative_per_mm2,

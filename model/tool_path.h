@@ -65,8 +65,9 @@ struct ToolPose {
 };
 
 // True when the move into `pose` is kept as programmed (a rapid, a link or a
-// held move): its target is kept, and smoothing, spline runs and derivative
-// stencils stop at it.
+// held move): its target is kept, and smoothing and spline runs stop at it
+// (high accuracy's smoothness stencils run into a held pose, as its fixed
+// end: solver/ceres_smoother.cc).
 inline bool IsPositioningMove(const ToolPose& pose) { return pose.rapid || pose.link || pose.held; }
 
 // A pose a method makes between poses of its source (a sample, an inserted

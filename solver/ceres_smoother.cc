@@ -13,6 +13,7 @@
 #include "model/axis_metrics.h"
 #include "model/invalid_field.h"
 #include "model/rail_projection.h"
+#include "model/standing_moves.h"
 #include "solver/coarse_to_fine.h"
 #include "solver/axis_limit_cost.h"
 #include "solver/deviation_cost.h"
@@ -62,16 +63,29 @@ std::vector<bool> FreePoses(const SmoothingInputs& in) {
   return cutting;
 }
 
-// The moves a stencil may not span: smoothness stops at every positioning
-// move, the limits only at rapids, because a link is a feed move the machine
-// must keep within its limits like any other.
-using StencilBreak = bool (*)(const ToolPose&);
-bool IsRapid(const ToolPose& pose) { return pose.rapid; }
+// The moves a stencil may not span (the move into pose j of the path): the
+// limits stop only at rapids, because a link is a feed move the machine must
+// keep within its limits like any other; smoothness stops at rapids, links
+// and standing moves (model/standing_moves.h), which have no length to
+// differentiate over, but runs into a held pose. A held pose keeps its
+// target, yet the move into it is a cut the machine makes from the pose
+// before, which the solve moves: with no stencil across that move, the free
+// pose beside a held one (the last of a program, the start of a standing
+// move) may sit anywhere its band allows, and on 0.05 mm moves that jump
+// broke axis limits the input kept (issue 17). With the stencil the held pose
+// is the run's fixed end, as a rapid target is its fixed start.
+using StencilBreak = bool (*)(const ToolPath&, size_t j);
+bool IsRapid(const ToolPath& path, size_t j) { return path.poses[j].rapid; }
+bool BreaksSmoothness(const ToolPath& path, size_t j) {
+  const ToolPose& pose = path.poses[j];
+  if (pose.rapid || pose.link) return true;
+  return pose.held && (pose.p_w_tip - path.poses[j - 1].p_w_tip).norm() < kStandingMoveMm;
+}
 
 // True when no move between poses first..first+count-1 is a `breaks` move.
 bool Connected(const ToolPath& path, size_t first, size_t count, StencilBreak breaks) {
   for (size_t j = first + 1; j < first + count; ++j) {
-    if (breaks(path.poses[j])) return false;
+    if (breaks(path, j)) return false;
   }
   return true;
 }
@@ -454,13 +468,13 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   // Jacobians still go through the linear algebra (more than half the
   // surface-free preset's solve, which sets w_third = 0).
   if (o.w_second > 0 || o.w_tip_second > 0) {
-    AddStencils<2>(path, free_pose, IsPositioningMove, state, problem, "second", [&](size_t i) {
+    AddStencils<2>(path, free_pose, BreaksSmoothness, state, problem, "second", [&](size_t i) {
       return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm, o.w_second,
                                        o.w_tip_second);
     });
   }
   if (o.w_third > 0 || o.w_tip_third > 0) {
-    AddStencils<3>(path, free_pose, IsPositioningMove, state, problem, "third", [&](size_t i) {
+    AddStencils<3>(path, free_pose, BreaksSmoothness, state, problem, "third", [&](size_t i) {
       return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm, o.w_third,
                                        o.w_tip_third);
     });

@@ -92,9 +92,15 @@ struct SmoothingResult {
   int tolerance_points = 0;
   // Runs put back as programmed because the method made their peak d2A/ds2
   // or d2C/ds2 higher than the input's (neither mode returns a program
-  // worse on either), or, in high-accuracy mode with a surface, because a
-  // neighbour put back left the mix beyond the tolerance.
+  // worse on either), or, in high-accuracy mode, because the solve broke
+  // more axis limits than its start and the input and these runs more than
+  // the input's (put back rather than refused), or, with a surface, because
+  // a neighbour put back left the mix beyond the tolerance.
   int runs_kept_as_input = 0;
+  // High accuracy with a surface: solves repeated with the smoothness
+  // weights raised because a run came out worse on peak d2 than the input's
+  // (each kept only if held to the tolerance).
+  int stiffer_solves = 0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;
   FeedScheduleReport feed;

@@ -768,10 +768,15 @@ TEST(GcodeProgramTest, NeitherModeReturnsLinuxCncsImpellerWorse) {
                                        report);
     ASSERT_EQ(r.exit_code, 0) << mode << ": " << r.output;
     // Without the put-back the spline took d2A/ds2 2.04 -> 3.14 and d2C/ds2
-    // 1.92 -> 4.89 deg/mm^2, and high accuracy made 7 runs worse on one or
-    // the other; those runs are put back.
+    // 1.92 -> 4.89 deg/mm^2; those runs are put back. High accuracy made 7
+    // runs worse on one or the other while its smoothness stencils stopped
+    // at every held pose; running into them, it makes none worse.
     const nlohmann::json j = testing::ReadJson(report);
-    EXPECT_GT(j["runs_kept_as_input"].get<int>(), 0) << mode;
+    if (mode == "spline") {
+      EXPECT_GT(j["runs_kept_as_input"].get<int>(), 0) << mode;
+    } else {
+      EXPECT_EQ(j["runs_kept_as_input"].get<int>(), 0) << mode;
+    }
     // Judged on the programs as written, read back.
     ToolPath after;
     ASSERT_TRUE(ReadGcode(out, machine, GcodeStyle::kJoint, &after, &warnings).ok());

@@ -155,7 +155,10 @@ INSTANTIATE_TEST_SUITE_P(
 // input was 0.000149 mm: beyond the tolerance of 0.01 mm at 5 of 4200 grid
 // points, after 4 rounds". Not a wall's doing (it is refused with
 // w_walls = 0 too): the excess is at the surface's end, u = 0, which the
-// pipeline's end handling and tolerance active set own.
+// pipeline's end handling and tolerance active set own. Since stop 23 it is
+// not refused: its run goes back as programmed (the input), which passes
+// this test's assertions without smoothing anything, so it stays disabled
+// until the solve itself holds the end.
 INSTANTIATE_TEST_SUITE_P(DISABLED_RefusedAtTheSurfacesEnd,
                          HighAccuracyTwistedSurfacesTest,
                          ::testing::Values(TwistedCase{"TwistedBlade70Minus",

@@ -68,14 +68,15 @@ TEST(LinuxCncHarnessTest, SmoothedProgramRunsAndMovesTheRotariesMoreGently) {
     out << ShortProgram();
   }
   // The machine straight from the controller's INI (model/linuxcnc_ini.h).
-  // The controller judges the solve's own program: on this section the
-  // solve lowers peak d2A/ds2 1.593 -> 0.904 but raises d2C/ds2 1.381 ->
-  // 2.809 deg/mm^2, so by default its one run would go back as programmed.
+  // With the defaults: since the smoothness stencils run into held poses,
+  // the solve lowers both peaks on this section (d2A/ds2 1.593 -> 0.652,
+  // d2C/ds2 1.381 -> 0.553 deg/mm^2), so its run is not put back (it raised
+  // d2C to 2.809 before, and this test had to turn the put-back off).
   const auto smooth = RunCommand(Tpopt(
       "smooth --flagfile=" + SourcePath("data/presets/surface_free.flags") + " --in=" + original +
       " --out=" + smoothed + " --machine=" + kSample +
       "/xyzac-trt.ini --cutter_radius=3 --gcode_inverse_time --gcode_preamble=M428 "
-      "--gcode_postamble=M429 --keep_runs_no_worse=false --quiet"));
+      "--gcode_postamble=M429 --quiet"));
   ASSERT_EQ(smooth.exit_code, 0) << smooth.output;
   nlohmann::json summary[2];
   const std::string programs[2] = {original, smoothed};
