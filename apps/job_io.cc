@@ -9,6 +9,7 @@
 
 #include "apps/flags.h"
 #include "model/apt_io.h"
+#include "model/freeform_surface_json.h"
 #include "model/gcode_io.h"
 #include "model/json_io.h"
 #include "model/linuxcnc_ini.h"

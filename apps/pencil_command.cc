@@ -9,6 +9,7 @@
 #include "apps/job_io.h"
 #include "apps/options_from_flags.h"
 #include "apps/report.h"
+#include "model/pencil_job.h"
 #include "solver/pencil_fit.h"
 
 namespace tpopt {

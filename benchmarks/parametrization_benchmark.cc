@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 
+#include "model/pencil_job.h"
 #include "model/pencil_path.h"
 #include "solver/pencil_fit.h"
 #include "solver/bspline_least_squares.h"

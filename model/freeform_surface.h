@@ -4,12 +4,7 @@
 // The geometry is model/bspline_surface.h's; this adds what a cutter
 // placement needs on top: a name, the side the cutter is on, and the
 // ParametricSurface interface (normals and curvatures towards the tool).
-//
-// JSON (mm): {"name", "units": "mm", "kind": "bspline_surface",
-//  "cutter_side": "positive" | "negative", "degree_u": 3, "degree_v": 3,
-//  "knots_u": [...], "knots_v": [...],
-//  "control_points": [[[x, y, z], ...  one row per u index ...], ...]}
-// control_points[i][j] is P_ij: i runs along u, j along v.
+// Its JSON file is read by model/freeform_surface_json.h.
 #ifndef TPOPT_MODEL_FREEFORM_SURFACE_H_
 #define TPOPT_MODEL_FREEFORM_SURFACE_H_
 
@@ -46,9 +41,6 @@ class FreeformSurface : public ParametricSurface {
   BSplineSurface surface_;
   double side_sign_ = 1.0;
 };
-
-// Reads the JSON above. Errors name the file and the field, index and value.
-Status ReadFreeformSurfaceJson(const std::string& path, FreeformSurface* surface);
 
 }  // namespace tpopt
 

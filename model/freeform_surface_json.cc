@@ -1,8 +1,8 @@
-// ReadFreeformSurfaceJson (model/freeform_surface.h).
+#include "model/freeform_surface_json.h"
+
 #include <string>
 #include <vector>
 
-#include "model/freeform_surface.h"
 #include "model/json_fields.h"
 
 namespace tpopt {

@@ -88,27 +88,6 @@ struct PencilRun {
 Status GeneratePencilRuns(const PencilGeometry& geometry, const std::vector<BSplineCurve>& guides,
                           const PencilOptions& options, std::vector<PencilRun>* runs);
 
-// Everything a pencil job reads: the surface, the guides, and the geometry
-// placed over that surface (which points into this object: not copyable).
-struct PencilJob {
-  PencilJob() = default;
-  PencilJob(const PencilJob&) = delete;
-  PencilJob& operator=(const PencilJob&) = delete;
-  BSplineSurface surface;
-  std::vector<BSplineCurve> guides;
-  GuidePlacement placement;
-  PencilGeometry geometry;
-};
-
-// Reads the surface and guide-curve JSON files (model/json_io.h) and places
-// the guides; errors name the file at fault.
-Status LoadPencilJob(const std::string& surface_path, const std::string& curve_path,
-                     double ball_radius_mm, PencilJob* job);
-
-// LoadPencilJob for a job whose surface is already set (read from a CAD
-// file): reads the guide curves and builds the geometry.
-Status CompletePencilJob(const std::string& curve_path, double ball_radius_mm, PencilJob* job);
-
 
 }  // namespace tpopt
 

@@ -106,7 +106,7 @@ struct HighAccuracyOptions {
   // With a surface, every stretch of the initial guess whose axis stays
   // within this angle of the pole (A = 0) while C turns by a quarter turn or
   // more is also solved the other way round the pole, and the cheaper
-  // solution kept (solver/pole_passage.h). Degrees, [0, 90); 0 = never.
+  // solution kept (solver/both_ways_round_poles.h). Degrees, [0, 90); 0 = never.
   double pole_passage_deg = 5.0;
   // On a path of more poses than this, each passage is tried the other way
   // in a window round it, not by solving the whole path again, so that its
@@ -188,7 +188,7 @@ struct HighAccuracyReport {
   // its edge.
   int poses_clamped = 0;
   // Pole passages of the initial guess solved both ways round, and how many
-  // of them the kept solution takes the other way (solver/pole_passage.h).
+  // of them the kept solution takes the other way (solver/both_ways_round_poles.h).
   int pole_passages = 0;
   int pole_passages_rerouted = 0;
   int pole_passages_in_windows = 0;  // tried in a window round them

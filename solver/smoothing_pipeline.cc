@@ -9,7 +9,7 @@
 #include <glog/logging.h>
 
 #include "model/axis_metrics.h"
-#include "solver/pole_passage.h"
+#include "solver/both_ways_round_poles.h"
 #include "solver/surface_placement.h"
 
 namespace tpopt {

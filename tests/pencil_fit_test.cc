@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "model/pencil_job.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -10,6 +10,7 @@
 #include "model/json_io.h"
 #include "model/path_generator.h"
 #include "model/path_metrics.h"
+#include "solver/both_ways_round_poles.h"
 #include "solver/spline_smoother.h"
 #include "tests/test_util.h"
 

@@ -8,6 +8,7 @@
 
 #include "model/cad_io.h"
 #include "model/freeform_surface.h"
+#include "model/freeform_surface_json.h"
 #include "model/json_io.h"
 
 namespace tpopt {
