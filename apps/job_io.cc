@@ -8,13 +8,13 @@
 #include <vector>
 
 #include "apps/flags.h"
-#include "model/apt_io.h"
-#include "model/freeform_surface_json.h"
-#include "model/gcode_io.h"
-#include "model/json_io.h"
-#include "model/linuxcnc_ini.h"
-#include "model/part_setup.h"
-#include "model/standing_moves.h"
+#include "model/io/apt_io.h"
+#include "model/io/freeform_surface_json.h"
+#include "model/io/gcode_io.h"
+#include "model/io/json_io.h"
+#include "model/io/linuxcnc_ini.h"
+#include "model/path/part_setup.h"
+#include "model/path/standing_moves.h"
 
 namespace tpopt {
 namespace {

@@ -67,7 +67,7 @@ TEST(LinuxCncHarnessTest, SmoothedProgramRunsAndMovesTheRotariesMoreGently) {
     std::ofstream out(original);
     out << ShortProgram();
   }
-  // The machine straight from the controller's INI (model/linuxcnc_ini.h).
+  // The machine straight from the controller's INI (model/io/linuxcnc_ini.h).
   // The controller judges the solve's own program: on this section the
   // solve lowers peak d2A/ds2 1.593 -> 0.904 but raises d2C/ds2 1.381 ->
   // 2.809 deg/mm^2, so by default its one run would go back as programmed.
