@@ -211,7 +211,7 @@ Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptio
                           ToolPath* out, HighAccuracyReport* report);
 
 // The Ceres Solver version tpopt is built with, e.g. "2.1.0" (for reports;
-// only solver/ includes Ceres).
+// only solver/smooth/ includes Ceres).
 std::string CeresVersion();
 
 }  // namespace tpopt
