@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <tuple>
 
-#include "model/json_fields.h"
+#include "model/io/json_fields.h"
 
 namespace tpopt {
 namespace {

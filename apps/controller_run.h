@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/status.h"
+#include "model/base/status.h"
 
 namespace tpopt {
 

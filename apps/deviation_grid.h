@@ -1,13 +1,13 @@
 // The deviation map of a path as a plain grid over the surface's (u, v).
 // The one place the pictures (HTML report, VTK export) read the deviation
-// evaluator's output, so a change of model/deviation.h touches only this.
+// evaluator's output, so a change of model/eval/deviation.h touches only this.
 #ifndef TPOPT_APPS_DEVIATION_GRID_H_
 #define TPOPT_APPS_DEVIATION_GRID_H_
 
 #include <optional>
 #include <vector>
 
-#include "model/path_metrics.h"
+#include "model/eval/path_metrics.h"
 
 namespace tpopt {
 

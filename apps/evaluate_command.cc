@@ -12,7 +12,7 @@
 #include "apps/progress_display.h"
 #include "apps/report.h"
 #include "apps/version.h"
-#include "model/json_io.h"
+#include "model/io/json_io.h"
 
 namespace tpopt {
 namespace {

@@ -3,7 +3,7 @@
 #ifndef TPOPT_APPS_EXIT_CODES_H_
 #define TPOPT_APPS_EXIT_CODES_H_
 
-#include "model/status.h"
+#include "model/base/status.h"
 
 namespace tpopt {
 

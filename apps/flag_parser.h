@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "model/status.h"
+#include "model/base/status.h"
 
 namespace tpopt {
 

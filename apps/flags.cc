@@ -89,7 +89,7 @@ DEFINE_double(angle_tolerance_deg, 0.5,
 DEFINE_double(overcut_factor, 3.0, "high_accuracy: weight of overcut relative to undercut (>= 1).");
 DEFINE_double(w_deviation, 1.0, "high_accuracy: weight of the swept-cutter deviation.");
 DEFINE_double(w_second, 300,
-              "high_accuracy: weight of d2(A,C)/ds2, mm^4/rad^2 (solver/smoothness_cost.h).");
+              "high_accuracy: weight of d2(A,C)/ds2, mm^4/rad^2 (solver/smooth/cost/smoothness_cost.h).");
 DEFINE_double(w_third, 3000, "high_accuracy: weight of d3(A,C)/ds3, mm^6/rad^2.");
 DEFINE_double(w_tip_second, 1e-2, "high_accuracy: weight of the tip's d2p/ds2, mm^2.");
 DEFINE_double(w_tip_third, 0.0, "high_accuracy: weight of the tip's d3p/ds3, mm^4.");
@@ -144,10 +144,10 @@ DEFINE_bool(accept_over_tolerance, false,
 DEFINE_double(link_feed_ratio, 10.0,
               "smooth, evaluate: a feed move at this many times the median feed or more is a "
               "link between cuts, kept as programmed like a rapid and not smoothed across "
-              "(model/link_moves.h; 0 = no links).");
+              "(model/path/link_moves.h; 0 = no links).");
 DEFINE_bool(schedule_feed, true,
             "smooth: lower the feed move by move where an axis would still exceed its velocity, "
-            "acceleration or jerk limit (solver/feed_scheduler.h).");
+            "acceleration or jerk limit (solver/smooth/feed_scheduler.h).");
 DEFINE_string(cnc_summary, "",
               "smooth, evaluate: summary.json of benchmarks/linuxcnc/run.sh for the program this "
               "command writes (smooth) or reads (evaluate): the report and the HTML report show "

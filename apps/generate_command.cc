@@ -6,8 +6,8 @@
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
 #include "apps/job_io.h"
-#include "model/json_io.h"
-#include "model/path_generator.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
 
 namespace tpopt {
 

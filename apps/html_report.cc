@@ -12,8 +12,8 @@
 #include "apps/motion_profile.h"
 #include "apps/svg_plot.h"
 #include "apps/version.h"
-#include "model/units.h"
-#include "solver/ceres_smoother.h"
+#include "model/base/units.h"
+#include "solver/smooth/ceres_smoother.h"
 
 namespace tpopt {
 namespace {

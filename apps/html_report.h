@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "apps/controller_run.h"
-#include "model/machine.h"
-#include "model/path_metrics.h"
-#include "model/status.h"
-#include "model/tool_path.h"
+#include "model/machine/machine.h"
+#include "model/eval/path_metrics.h"
+#include "model/base/status.h"
+#include "model/path/tool_path.h"
 
 namespace tpopt {
 

@@ -8,14 +8,15 @@
 #include <vector>
 
 #include "apps/flags.h"
-#include "model/apt_io.h"
-#include "model/gcode_io.h"
-#include "model/json_io.h"
-#include "model/linuxcnc_ini.h"
-#include "model/linuxcnc_tool_table.h"
-#include "model/part_setup.h"
-#include "model/program_frame.h"
-#include "model/standing_moves.h"
+#include "model/io/apt_io.h"
+#include "model/io/gcode_io.h"
+#include "model/io/json_io.h"
+#include "model/io/linuxcnc_ini.h"
+#include "model/io/linuxcnc_tool_table.h"
+#include "model/path/part_setup.h"
+#include "model/path/program_frame.h"
+#include "model/path/standing_moves.h"
+#include "model/io/freeform_surface_json.h"
 
 namespace tpopt {
 namespace {
@@ -256,7 +257,7 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
 namespace {
 
 // The surface, in the CAD model's frame, brought into the frame the path's
-// poses are in: an APT program's own (its MSYS, model/program_frame.h),
+// poses are in: an APT program's own (its MSYS, model/path/program_frame.h),
 // then placed on the table as the program is (--part_setup).
 Status SurfaceIntoPathFrame(const ToolPath& path, const PartSetup& setup, RuledSurface* surface) {
   ProgramFrame frame;

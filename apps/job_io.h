@@ -10,18 +10,18 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/controller_run.h"
-#include "model/apt_io.h"
-#include "model/bspline_surface.h"
-#include "model/cad_io.h"
-#include "model/freeform_surface.h"
-#include "model/cutter.h"
-#include "model/interpolation.h"
-#include "model/link_moves.h"
-#include "model/machine.h"
-#include "model/part_setup.h"
-#include "model/ruled_surface.h"
-#include "model/status.h"
-#include "model/tool_path.h"
+#include "model/io/apt_io.h"
+#include "model/geometry/bspline_surface.h"
+#include "model/cad/cad_io.h"
+#include "model/geometry/freeform_surface.h"
+#include "model/cutter/cutter.h"
+#include "model/machine/interpolation.h"
+#include "model/path/link_moves.h"
+#include "model/machine/machine.h"
+#include "model/path/part_setup.h"
+#include "model/geometry/ruled_surface.h"
+#include "model/base/status.h"
+#include "model/path/tool_path.h"
 
 namespace tpopt {
 
@@ -41,7 +41,7 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
                     const std::vector<AptCurveSpan>& spans = {},
                     const ToolPath* source = nullptr);
 
-// --part_setup (model/part_setup.h); empty is the identity. Errors are
+// --part_setup (model/path/part_setup.h); empty is the identity. Errors are
 // usage errors; CheckPartSetupFlag checks it before a run.
 Status PartSetupFromFlag(PartSetup* setup);
 Status CheckPartSetupFlag();

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "model/axis_metrics.h"
-#include "model/units.h"
+#include "model/machine/axis_metrics.h"
+#include "model/base/units.h"
 
 namespace tpopt {
 namespace {

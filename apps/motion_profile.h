@@ -6,9 +6,9 @@
 #include <array>
 #include <vector>
 
-#include "model/machine.h"
-#include "model/status.h"
-#include "model/tool_path.h"
+#include "model/machine/machine.h"
+#include "model/base/status.h"
+#include "model/path/tool_path.h"
 
 namespace tpopt {
 
@@ -23,7 +23,7 @@ struct MotionProfile {
   std::array<std::vector<double>, 2> acceleration_deg_s2;  // per pose
 };
 
-// Joints as Machine::AssignJoints chooses them, timed as model/axis_metrics.h
+// Joints as Machine::AssignJoints chooses them, timed as model/machine/axis_metrics.h
 // times them at `default_feed_mm_per_min` where a pose has no feed. Fails as
 // AssignJoints does.
 Status ComputeMotionProfile(const Machine& machine, const ToolPath& path,

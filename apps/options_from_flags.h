@@ -3,13 +3,13 @@
 #ifndef TPOPT_APPS_OPTIONS_FROM_FLAGS_H_
 #define TPOPT_APPS_OPTIONS_FROM_FLAGS_H_
 
-#include "model/axis_metrics.h"
-#include "model/deviation.h"
-#include "model/link_moves.h"
-#include "model/status.h"
-#include "solver/ceres_smoother.h"
-#include "solver/curve_output.h"
-#include "solver/spline_smoother.h"
+#include "model/machine/axis_metrics.h"
+#include "model/eval/deviation.h"
+#include "model/path/link_moves.h"
+#include "model/base/status.h"
+#include "solver/smooth/ceres_smoother.h"
+#include "solver/fit/curve_output.h"
+#include "solver/spline/spline_smoother.h"
 
 namespace tpopt {
 

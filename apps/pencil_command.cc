@@ -9,7 +9,8 @@
 #include "apps/job_io.h"
 #include "apps/options_from_flags.h"
 #include "apps/report.h"
-#include "solver/pencil_fit.h"
+#include "model/io/pencil_job.h"
+#include "solver/fit/pencil_fit.h"
 
 namespace tpopt {
 namespace {

@@ -3,8 +3,8 @@
 #include "apps/deviation_grid.h"
 #include "apps/flags.h"
 #include "apps/vtk_scene.h"
-#include "model/atomic_file.h"
-#include "model/vtk_writer.h"
+#include "model/io/atomic_file.h"
+#include "model/io/vtk_writer.h"
 
 namespace tpopt {
 

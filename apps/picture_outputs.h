@@ -8,7 +8,7 @@
 
 #include "apps/html_report.h"
 #include "apps/job_io.h"
-#include "model/status.h"
+#include "model/base/status.h"
 
 namespace tpopt {
 

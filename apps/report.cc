@@ -5,9 +5,9 @@
 #include "apps/commands.h"
 #include "apps/huge_page_malloc.h"
 #include "apps/version.h"
-#include "model/atomic_file.h"
-#include "model/units.h"
-#include "solver/smoothing_pipeline.h"
+#include "model/io/atomic_file.h"
+#include "model/base/units.h"
+#include "solver/smooth/smoothing_pipeline.h"
 
 namespace tpopt {
 namespace {

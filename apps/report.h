@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.h"
-#include "model/path_metrics.h"
-#include "solver/smoothing_pipeline.h"
-#include "model/status.h"
+#include "model/eval/path_metrics.h"
+#include "solver/smooth/smoothing_pipeline.h"
+#include "model/base/status.h"
 
 namespace tpopt {
 

@@ -11,8 +11,8 @@
 #include "apps/picture_outputs.h"
 #include "apps/progress_display.h"
 #include "apps/report.h"
-#include "model/apt_io.h"
-#include "solver/smoothing_pipeline.h"
+#include "model/io/apt_io.h"
+#include "solver/smooth/smoothing_pipeline.h"
 
 namespace tpopt {
 namespace {

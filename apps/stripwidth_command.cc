@@ -1,6 +1,6 @@
 // tpopt stripwidth: a strip-width machining pass with a torus cutter over a
 // bicubic surface, positioned by Sturz's method, the multi-point method or
-// mid-point error control (solver/tool_posture.h), written as a CL path
+// mid-point error control (solver/strip/tool_posture.h), written as a CL path
 // with a report of strip widths, tool-centre fluctuation and A/C motion.
 #include <chrono>
 #include <cmath>
@@ -14,11 +14,11 @@
 #include "apps/job_io.h"
 #include "apps/options_from_flags.h"
 #include "apps/report.h"
-#include "model/freeform_surface.h"
-#include "model/path_metrics.h"
-#include "model/units.h"
-#include "solver/strip_path.h"
-#include "solver/strip_path_metrics.h"
+#include "model/geometry/freeform_surface.h"
+#include "model/eval/path_metrics.h"
+#include "model/base/units.h"
+#include "solver/strip/strip_path.h"
+#include "solver/strip/strip_path_metrics.h"
 
 namespace tpopt {
 namespace {

@@ -6,10 +6,10 @@
 #include <optional>
 
 #include "apps/deviation_grid.h"
-#include "model/cutter.h"
-#include "model/ruled_surface.h"
-#include "model/tool_path.h"
-#include "model/vtk_writer.h"
+#include "model/cutter/cutter.h"
+#include "model/geometry/ruled_surface.h"
+#include "model/path/tool_path.h"
+#include "model/io/vtk_writer.h"
 
 namespace tpopt {
 

@@ -12,10 +12,11 @@
 #include <random>
 #include <string>
 
-#include "model/pencil_path.h"
-#include "solver/pencil_fit.h"
-#include "solver/bspline_least_squares.h"
-#include "solver/span_error.h"
+#include "model/io/pencil_job.h"
+#include "model/path/pencil_path.h"
+#include "solver/fit/pencil_fit.h"
+#include "solver/fit/bspline_least_squares.h"
+#include "solver/fit/span_error.h"
 
 namespace tpopt {
 namespace {

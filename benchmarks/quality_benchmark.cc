@@ -20,12 +20,12 @@
 #include <vector>
 
 #include "apps/huge_page_malloc.h"
-#include "model/gcode_io.h"
-#include "model/json_io.h"
-#include "model/link_moves.h"
-#include "model/path_generator.h"
-#include "model/units.h"
-#include "solver/smoothing_pipeline.h"
+#include "model/io/gcode_io.h"
+#include "model/io/json_io.h"
+#include "model/path/link_moves.h"
+#include "model/path/path_generator.h"
+#include "model/base/units.h"
+#include "solver/smooth/smoothing_pipeline.h"
 
 namespace tpopt {
 namespace {

@@ -1,5 +1,5 @@
 // Both smoothing modes under both interpolation models on random cases
-// (model/random_cases.h): the distribution over the cases of max |dev| /
+// (model/eval/random_cases.h): the distribution over the cases of max |dev| /
 // the clean DPO path's, the peak d2A/ds2 and d2C/ds2 / the clean SPO path's,
 // refusals, failures and time. Prints a Markdown table; `--out=FILE.csv`
 // also writes one row per case and configuration.
@@ -29,11 +29,11 @@
 #include <string>
 #include <vector>
 
-#include "model/atomic_file.h"
-#include "model/json_io.h"
-#include "model/path_metrics.h"
-#include "model/random_cases.h"
-#include "solver/smoothing_pipeline.h"
+#include "model/io/atomic_file.h"
+#include "model/io/json_io.h"
+#include "model/eval/path_metrics.h"
+#include "model/eval/random_cases.h"
+#include "solver/smooth/smoothing_pipeline.h"
 
 namespace tpopt {
 namespace {

@@ -10,14 +10,14 @@
 #include <benchmark/benchmark.h>
 
 #include "apps/huge_page_malloc.h"
-#include "model/apt_io.h"
-#include "model/deviation.h"
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "solver/bspline_fit.h"
-#include "solver/ceres_smoother.h"
-#include "solver/pole_passage.h"
-#include "solver/spline_smoother.h"
+#include "model/io/apt_io.h"
+#include "model/eval/deviation.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "solver/fit/bspline_fit.h"
+#include "solver/smooth/ceres_smoother.h"
+#include "solver/smooth/both_ways_round_poles.h"
+#include "solver/spline/spline_smoother.h"
 
 namespace tpopt {
 namespace {
@@ -70,7 +70,7 @@ BENCHMARK(BM_HighAccuracy)->Arg(1000)->Arg(10000)->Arg(100000)->Arg(1000000)->Un
 // Seven passes of the hypar's distorted CAM path (3,000 poses each, a
 // rapid before each), every one crossing near the A = 0 pole: each passage
 // tried the other way by solving the whole path again (arg 0) or in a
-// window round it (arg 1, solver/pole_passage.h).
+// window round it (arg 1, solver/smooth/both_ways_round_poles.h).
 void BM_PolePassages(benchmark::State& state) {
   RuledSurface surface;
   Machine machine;

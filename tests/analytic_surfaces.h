@@ -11,9 +11,9 @@
 
 #include <glog/logging.h>
 
-#include "model/freeform_surface.h"
-#include "model/parametric_surface.h"
-#include "model/ruled_surface.h"
+#include "model/geometry/freeform_surface.h"
+#include "model/geometry/parametric_surface.h"
+#include "model/geometry/ruled_surface.h"
 
 namespace tpopt::testing {
 

@@ -1,4 +1,4 @@
-#include "model/apt_io.h"
+#include "model/io/apt_io.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>

@@ -1,4 +1,4 @@
-#include "solver/axis_limit_cost.h"
+#include "solver/smooth/cost/axis_limit_cost.h"
 
 #include <gtest/gtest.h>
 

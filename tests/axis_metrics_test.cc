@@ -1,4 +1,4 @@
-#include "model/axis_metrics.h"
+#include "model/machine/axis_metrics.h"
 
 #include <gtest/gtest.h>
 
@@ -96,7 +96,7 @@ TEST(AxisMetricsTest, RapidTakesItsSlowestAxisAndBreaksTheChain) {
   }
 }
 
-// A link (model/link_moves.h) is a feed move: timed at its feed and checked
+// A link (model/path/link_moves.h) is a feed move: timed at its feed and checked
 // against the limits like any other. Only the arc-length measure stops at it,
 // because the corner where a link meets a cut is the program's, kept as is.
 TEST(AxisMetricsTest, ALinkIsAFeedMoveButEndsTheArcLengthStencils) {

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "model/cad_io.h"
+#include "model/cad/cad_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -116,7 +116,7 @@ TEST_F(BadInputMatrixTest, CadSurfaceErrorsExitOneNamingTheFileAndFace) {
   const std::string text = testing::ReadFileText(good);
   Write("cut.stp", text.substr(0, text.size() / 2));
   // An IGES surface (128) whose K1 asks for more poles than it holds
-  // (tpopt's IGES pre-check, model/cad_io.cc).
+  // (tpopt's IGES pre-check, model/cad/cad_io.cc).
   ASSERT_TRUE(WriteCadPatches(dir_.File("good.igs"), {ruled}, {}).ok());
   std::string iges = testing::ReadFileText(dir_.File("good.igs"));
   const size_t k1 = iges.find("\n128,3,1,3,1,");
@@ -239,7 +239,7 @@ TEST_F(BadInputMatrixTest, VeryLargeInputStreamsToTheErrorOnItsLastLine) {
   struct rusage usage {};
   ASSERT_EQ(getrusage(RUSAGE_CHILDREN, &usage), 0);
   // ru_maxrss is in KiB on Linux. 600,000 poses hold about 60 MB, and the
-  // program's blocks (model/program.h: each line's text, so that a written
+  // program's blocks (model/path/program.h: each line's text, so that a written
   // program is the user's own) about as much again; the sanitizer build
   // roughly triples that.
   EXPECT_LT(usage.ru_maxrss, 800 * 1024) << "peak memory of the largest child, KiB";

@@ -1,11 +1,11 @@
-// Properties of the B-spline basis (model/bspline_basis.h): at random
+// Properties of the B-spline basis (model/geometry/bspline_basis.h): at random
 // parameters and at every knot, for degrees 1-5, the basis functions are a
 // partition of unity, never negative, and agree with the Cox-de Boor
 // recursion written out from its definition; their derivatives sum to zero.
 // Clamped knot vectors (the files' kind, normalised to [0, 1]) and
 // unclamped uniform ones (evaluated inside [t_p, t_n], where the basis is
 // complete) both.
-#include "model/bspline_basis.h"
+#include "model/geometry/bspline_basis.h"
 
 #include <gtest/gtest.h>
 

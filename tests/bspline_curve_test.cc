@@ -1,4 +1,4 @@
-#include "model/bspline_curve.h"
+#include "model/geometry/bspline_curve.h"
 
 #include <random>
 

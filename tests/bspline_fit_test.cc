@@ -1,14 +1,14 @@
 // The seed-004 local fit against closed forms: circles (arc length known),
 // a helix, a straight line, and the independent B-spline evaluator of
-// model/bspline_curve.
-#include "solver/bspline_fit.h"
+// model/geometry/bspline_curve.
+#include "solver/fit/bspline_fit.h"
 
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "model/bspline_curve.h"
+#include "model/geometry/bspline_curve.h"
 
 namespace tpopt {
 namespace {

@@ -1,6 +1,6 @@
 // The global least-squares fit: exact on a cubic, within tolerance and
 // far fewer control points than points on a helix, and bad input refused.
-#include "solver/bspline_least_squares.h"
+#include "solver/fit/bspline_least_squares.h"
 
 #include <cmath>
 

@@ -1,13 +1,13 @@
 // The tensor-product surface against exact polynomials: a bicubic Bezier
 // patch that is the function z = x^2 y, a multi-span surface that is a
 // plane (linear precision at the Greville abscissae), and the JSON reader.
-#include "model/bspline_surface.h"
+#include "model/geometry/bspline_surface.h"
 
 #include <fstream>
 
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
+#include "model/io/json_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,4 +1,4 @@
-#include "model/cad_io.h"
+#include "model/cad/cad_io.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "model/json_io.h"
+#include "model/io/json_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

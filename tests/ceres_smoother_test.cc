@@ -1,12 +1,12 @@
 // Whole-smoother tests: final metrics, never raw parameters.
-#include "solver/ceres_smoother.h"
+#include "solver/smooth/ceres_smoother.h"
 
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "model/path_metrics.h"
-#include "solver/spline_smoother.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "model/eval/path_metrics.h"
+#include "solver/spline/spline_smoother.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,4 +1,4 @@
-#include "model/circular_arc.h"
+#include "model/geometry/circular_arc.h"
 
 #include <gtest/gtest.h>
 

@@ -1,17 +1,17 @@
 // Coarse-to-fine solve: station choice, exact interpolation of what a
 // natural cubic spline can represent, and the same optimum as the direct
 // solve on a dense path.
-#include "solver/coarse_to_fine.h"
+#include "solver/smooth/coarse_to_fine.h"
 
 #include <algorithm>
 
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "model/path_metrics.h"
-#include "solver/ceres_smoother.h"
-#include "solver/spline_smoother.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "model/eval/path_metrics.h"
+#include "solver/smooth/ceres_smoother.h"
+#include "solver/spline/spline_smoother.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -129,7 +129,7 @@ TEST(CoarseToFineSolveTest, CoarseToFineAndWindowsMatchTheDirectSolve) {
   }
 }
 
-// Held poses (a window's seams, solver/pole_passage.h) stay exactly at
+// Held poses (a window's seams, solver/spline/pole_passage.h) stay exactly at
 // the guess through the coarse levels and the windows, however the path is
 // solved, while the poses next to them move.
 TEST(CoarseToFineSolveTest, HeldPosesKeepTheGuessAtEveryLevelAndWindow) {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "model/atomic_file.h"
+#include "model/io/atomic_file.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -14,14 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "solver/axis_cone_cost.h"
-#include "solver/axis_limit_cost.h"
-#include "solver/deviation_cost.h"
-#include "solver/smoothness_cost.h"
-#include "solver/surface_side_cost.h"
-#include "solver/tip_height_cost.h"
-#include "solver/tolerance_band_cost.h"
-#include "solver/travel_cost.h"
+#include "solver/smooth/cost/axis_cone_cost.h"
+#include "solver/smooth/cost/axis_limit_cost.h"
+#include "solver/smooth/cost/deviation_cost.h"
+#include "solver/smooth/cost/smoothness_cost.h"
+#include "solver/smooth/cost/surface_side_cost.h"
+#include "solver/smooth/cost/tip_height_cost.h"
+#include "solver/smooth/cost/tolerance_band_cost.h"
+#include "solver/smooth/cost/travel_cost.h"
 
 namespace tpopt {
 namespace {

@@ -1,7 +1,7 @@
 // Curve output of a tool path: runs split at rapids and corners, every
 // input pose kept, resampled points on the spans, spans on a circle close
 // to it, and a file that reads back.
-#include "solver/curve_output.h"
+#include "solver/fit/curve_output.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "model/cutter.h"
+#include "model/cutter/cutter.h"
 
 #include <gtest/gtest.h>
 

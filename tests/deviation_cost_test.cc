@@ -1,4 +1,4 @@
-#include "solver/deviation_cost.h"
+#include "solver/smooth/cost/deviation_cost.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "model/deviation.h"
+#include "model/eval/deviation.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "model/json_io.h"
+#include "model/io/json_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

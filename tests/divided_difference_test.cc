@@ -1,7 +1,7 @@
 // Properties of the divided-difference derivative weights: exact on every
 // polynomial of their degree at uneven (and even) spacing, blind to lower
 // degrees, and the familiar differences on a uniform grid.
-#include "solver/divided_difference.h"
+#include "solver/smooth/cost/divided_difference.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "solver/feed_scheduler.h"
+#include "solver/smooth/feed_scheduler.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "model/axis_metrics.h"
-#include "model/json_io.h"
-#include "model/path_generator.h"
+#include "model/machine/axis_metrics.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -22,7 +22,7 @@ struct Scheduled {
 };
 
 // The path at `feed_mm_per_min`. Raising a feed needs one below what the
-// planner can reach on the moves (model/planner_time.h): on the hypar's
+// planner can reach on the moves (model/machine/planner_time.h): on the hypar's
 // 0.2 mm moves jcde2022's rotary limits allow a_t = 38 mm/s^2 along the
 // path, so 60 sqrt(a_t L) = 165 mm/min.
 Scheduled GenerateAndSchedule(const std::string& surface_name, const std::string& machine_name, double noise_deg,
@@ -249,7 +249,7 @@ TEST(FeedSchedulerTest, RaisedFeedsAskNoAxisMoreThanTheInputsOwnPeaks) {
 
 TEST(FeedSchedulerTest, RaisedFeedsStopAtWhatThePlannerCanReach) {
   // 0.2 mm moves at 60 mm/min, factor 100: a planner blending at half of
-  // X's 300 mm/s^2 reaches sqrt(150 * 0.2) mm/s on each (model/planner_time.h).
+  // X's 300 mm/s^2 reaches sqrt(150 * 0.2) mm/s on each (model/machine/planner_time.h).
   Machine machine;
   machine.limits[kX].max_acceleration = 300.0;
   std::vector<double> ends, times;

@@ -1,6 +1,7 @@
 // FreeformSurface against a polynomial it represents exactly, and its JSON
 // reader's errors.
-#include "model/freeform_surface.h"
+#include "model/geometry/freeform_surface.h"
+#include "model/io/freeform_surface_json.h"
 
 #include <fstream>
 

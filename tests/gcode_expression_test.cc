@@ -1,4 +1,4 @@
-#include "model/gcode_expression.h"
+#include "model/io/gcode_expression.h"
 
 #include <gtest/gtest.h>
 

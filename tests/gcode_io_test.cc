@@ -1,6 +1,6 @@
 // G-code out and in, checked by LinuxCNC's own interpreter (rs274 from
 // Debian's linuxcnc-uspace) where it is installed.
-#include "model/gcode_io.h"
+#include "model/io/gcode_io.h"
 
 #include <cmath>
 #include <fstream>
@@ -11,10 +11,10 @@
 
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
-#include "model/link_moves.h"
-#include "model/path_metrics.h"
-#include "model/path_generator.h"
+#include "model/io/json_io.h"
+#include "model/path/link_moves.h"
+#include "model/eval/path_metrics.h"
+#include "model/path/path_generator.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,6 +1,6 @@
 // Dense runs beside a sharp turn in high accuracy (issue 17): on the
 // LinuxCNC sim machine, 0.05 mm moves next to a reversal or a standing move
-// (model/standing_moves.h) were refused with exit 3, "worse than its spline
+// (model/path/standing_moves.h) were refused with exit 3, "worse than its spline
 // starting point": the free pose beside a held one (the last of the program,
 // the start of a standing move) had no smoothness stencil across its move
 // into it, so the solve jumped it by a few degrees of C within the band, and
@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "model/axis_metrics.h"
-#include "model/gcode_io.h"
-#include "model/json_io.h"
+#include "model/machine/axis_metrics.h"
+#include "model/io/gcode_io.h"
+#include "model/io/json_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,4 +1,4 @@
-// The high-accuracy mode on fixed-seed random cases (model/random_cases.h):
+// The high-accuracy mode on fixed-seed random cases (model/eval/random_cases.h):
 // surfaces and CAM conventions it was not built on. Each case asserts what
 // issue 16 asks of the mode:
 //  - success wherever the input fits the machine;
@@ -12,11 +12,11 @@
 
 #include <gtest/gtest.h>
 
-#include "model/deviation.h"
-#include "model/json_io.h"
-#include "model/random_cases.h"
-#include "model/rail_projection.h"
-#include "solver/smoothing_pipeline.h"
+#include "model/eval/deviation.h"
+#include "model/io/json_io.h"
+#include "model/eval/random_cases.h"
+#include "model/path/rail_projection.h"
+#include "solver/smooth/smoothing_pipeline.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

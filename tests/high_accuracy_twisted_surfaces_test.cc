@@ -16,10 +16,10 @@
 #include <ostream>
 #include <string>
 
-#include "model/deviation.h"
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "solver/smoothing_pipeline.h"
+#include "model/eval/deviation.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "solver/smooth/smoothing_pipeline.h"
 #include "tests/analytic_surfaces.h"
 #include "tests/test_util.h"
 

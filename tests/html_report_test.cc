@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "solver/ceres_smoother.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "solver/smooth/ceres_smoother.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,4 +1,4 @@
-#include "model/interpolation.h"
+#include "model/machine/interpolation.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "model/json_io.h"
+#include "model/io/json_io.h"
 
 #include <cstdlib>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "model/link_moves.h"
+#include "model/path/link_moves.h"
 
 #include <cmath>
 #include <limits>

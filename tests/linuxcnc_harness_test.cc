@@ -67,7 +67,7 @@ TEST(LinuxCncHarnessTest, SmoothedProgramRunsAndMovesTheRotariesMoreGently) {
     std::ofstream out(original);
     out << ShortProgram();
   }
-  // The machine straight from the controller's INI (model/linuxcnc_ini.h).
+  // The machine straight from the controller's INI (model/io/linuxcnc_ini.h).
   // With the defaults: since the smoothness stencils run into held poses,
   // the solve lowers both peaks on this section (d2A/ds2 1.593 -> 0.652,
   // d2C/ds2 1.381 -> 0.553 deg/mm^2), so its run is not put back (it raised

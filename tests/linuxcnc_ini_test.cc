@@ -1,12 +1,12 @@
-#include "model/linuxcnc_ini.h"
+#include "model/io/linuxcnc_ini.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <sstream>
 
-#include "model/atomic_file.h"
-#include "model/json_io.h"
+#include "model/io/atomic_file.h"
+#include "model/io/json_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

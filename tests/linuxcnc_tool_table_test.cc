@@ -1,4 +1,4 @@
-#include "model/linuxcnc_tool_table.h"
+#include "model/io/linuxcnc_tool_table.h"
 
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "model/gcode_io.h"
-#include "model/linuxcnc_ini.h"
-#include "model/machine.h"
+#include "model/io/gcode_io.h"
+#include "model/io/linuxcnc_ini.h"
+#include "model/machine/machine.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

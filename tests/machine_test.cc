@@ -1,4 +1,4 @@
-#include "model/machine.h"
+#include "model/machine/machine.h"
 
 #include <array>
 #include <random>

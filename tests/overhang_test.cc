@@ -1,12 +1,12 @@
-#include "solver/overhang.h"
+#include "solver/spline/overhang.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "model/rail_projection.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "model/path/rail_projection.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,4 +1,4 @@
-#include "model/part_setup.h"
+#include "model/path/part_setup.h"
 
 #include <gtest/gtest.h>
 

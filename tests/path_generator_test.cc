@@ -1,8 +1,8 @@
-#include "model/path_generator.h"
+#include "model/path/path_generator.h"
 
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
+#include "model/io/json_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

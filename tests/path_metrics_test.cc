@@ -1,4 +1,4 @@
-#include "model/path_metrics.h"
+#include "model/eval/path_metrics.h"
 
 #include <gtest/gtest.h>
 

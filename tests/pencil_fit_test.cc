@@ -1,10 +1,11 @@
 // The seed's pencil example end to end in the library: the fit passes
 // through every CL point and cuts the chord error of straight moves by at
 // least 10x; a ball larger than a trough's radius is reported as folding.
-#include "solver/pencil_fit.h"
+#include "solver/fit/pencil_fit.h"
 
 #include <gtest/gtest.h>
 
+#include "model/io/pencil_job.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,10 +1,11 @@
 // Pencil-path geometry: on a plane every quantity has a closed form; on the
 // bundled free-form surface the analytic derivatives must match finite
 // differences and the CL points must sit one ball radius off the surface.
-#include "model/pencil_path.h"
+#include "model/path/pencil_path.h"
 
 #include <gtest/gtest.h>
 
+#include "model/io/pencil_job.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,4 +1,4 @@
-#include "model/planner_time.h"
+#include "model/machine/planner_time.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "model/axis_metrics.h"
+#include "model/machine/axis_metrics.h"
 
 namespace tpopt {
 namespace {

@@ -1,16 +1,16 @@
 // Straight through the A = 0 pole: the plane fitted to a passage that
 // misses the pole, the axes put on it, and the spline mode that does so on
 // the hypar's distorted CAM path.
-#include "solver/pole_crossing.h"
+#include "solver/spline/pole_crossing.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "model/path_metrics.h"
-#include "solver/spline_smoother.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "model/eval/path_metrics.h"
+#include "solver/spline/spline_smoother.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

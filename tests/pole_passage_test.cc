@@ -1,16 +1,17 @@
 // The two ways round the A = 0 pole: finding the stretches where the axis
 // circles close to +Z, taking one the other way round, and the solve that
 // tries both on the hypar's distorted CAM path.
-#include "solver/pole_passage.h"
+#include "solver/spline/pole_passage.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "model/path_metrics.h"
-#include "solver/spline_smoother.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "model/eval/path_metrics.h"
+#include "solver/smooth/both_ways_round_poles.h"
+#include "solver/spline/spline_smoother.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,8 +1,8 @@
-// Properties of the pose spline (solver/pose_spline.h): it passes through
+// Properties of the pose spline (solver/spline/pose_spline.h): it passes through
 // every pose it was fitted to (tip and axis), at uneven parameters and on a
 // subset of the poses, including poses at and near the A = 0 pole; and it
 // reproduces poses whose tip and joints are linear in s between its knots.
-#include "solver/pose_spline.h"
+#include "solver/spline/pose_spline.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "model/principle_error.h"
+#include "model/eval/principle_error.h"
 
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 #include <limits>
 #include <vector>
 
-#include "model/cutter.h"
-#include "model/deviation.h"
-#include "model/ruled_surface.h"
+#include "model/cutter/cutter.h"
+#include "model/eval/deviation.h"
+#include "model/geometry/ruled_surface.h"
 
 namespace tpopt {
 namespace {

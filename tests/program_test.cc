@@ -1,10 +1,10 @@
-#include "model/program.h"
+#include "model/path/program.h"
 
 #include <gtest/gtest.h>
 
-#include "model/machine.h"
-#include "model/tool_path.h"
-#include "solver/resample.h"
+#include "model/machine/machine.h"
+#include "model/path/tool_path.h"
+#include "solver/smooth/resample.h"
 
 namespace tpopt {
 namespace {

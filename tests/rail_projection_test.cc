@@ -1,9 +1,9 @@
-#include "model/rail_projection.h"
+#include "model/path/rail_projection.h"
 
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,12 +1,12 @@
-#include "model/random_cases.h"
+#include "model/eval/random_cases.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
 
-#include "model/json_io.h"
-#include "model/rail_projection.h"
+#include "model/io/json_io.h"
+#include "model/path/rail_projection.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -177,7 +177,7 @@ TEST(RandomCasesTest, NearPoleCasesPassNearThePole) {
   EXPECT_GT(checked, 3);
 }
 
-// The references are the clean offsets of model/path_generator on the same
+// The references are the clean offsets of model/path/path_generator on the same
 // surface: the SPO tip is R off rail 0 along the normal, with no bump or
 // noise, and the DPO axis is a unit vector; both carry the case's cutter.
 TEST(RandomCasesTest, ReferencesAreCleanOffsets) {

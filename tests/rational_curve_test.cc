@@ -1,4 +1,4 @@
-#include "model/rational_curve.h"
+#include "model/geometry/rational_curve.h"
 
 #include <gtest/gtest.h>
 

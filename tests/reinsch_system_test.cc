@@ -1,4 +1,4 @@
-#include "solver/reinsch_system.h"
+#include "solver/spline/reinsch_system.h"
 
 #include <limits>
 #include <random>

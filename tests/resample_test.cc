@@ -1,4 +1,4 @@
-#include "solver/resample.h"
+#include "solver/smooth/resample.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "model/ruled_surface.h"
+#include "model/geometry/ruled_surface.h"
 
 #include <gtest/gtest.h>
 

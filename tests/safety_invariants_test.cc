@@ -5,9 +5,9 @@
 // the input was closer.
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "solver/smoothing_pipeline.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "solver/smooth/smoothing_pipeline.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

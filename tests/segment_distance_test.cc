@@ -1,4 +1,4 @@
-#include "model/segment_distance.h"
+#include "model/geometry/segment_distance.h"
 
 #include <gtest/gtest.h>
 

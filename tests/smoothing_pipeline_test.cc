@@ -1,9 +1,9 @@
-#include "solver/smoothing_pipeline.h"
+#include "solver/smooth/smoothing_pipeline.h"
 
 #include <gtest/gtest.h>
 
-#include "model/path_generator.h"
-#include "model/random_cases.h"
+#include "model/path/path_generator.h"
+#include "model/eval/random_cases.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,4 +1,4 @@
-#include "solver/smoothing_spline.h"
+#include "solver/spline/smoothing_spline.h"
 
 #include <chrono>
 #include <random>

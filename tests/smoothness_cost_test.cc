@@ -1,4 +1,4 @@
-#include "solver/smoothness_cost.h"
+#include "solver/smooth/cost/smoothness_cost.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-#include "solver/spline_smoother.h"
+#include "solver/spline/spline_smoother.h"
 
 #include <gtest/gtest.h>
 
-#include "model/axis_metrics.h"
-#include "model/json_io.h"
-#include "model/path_generator.h"
+#include "model/machine/axis_metrics.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

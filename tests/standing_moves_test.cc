@@ -1,8 +1,8 @@
-// Standing moves (model/standing_moves.h): which moves are marked, and the
+// Standing moves (model/path/standing_moves.h): which moves are marked, and the
 // programs of issue 17, item 7 (a pure rotary move, then the same pose
 // again; repeats at a run's ends; a run of rotary moves only), which both
 // modes must smooth, in both formats, into programs that load.
-#include "model/standing_moves.h"
+#include "model/path/standing_moves.h"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "model/apt_io.h"
-#include "model/gcode_io.h"
+#include "model/io/apt_io.h"
+#include "model/io/gcode_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,5 +1,5 @@
 // Status codes and RETURN_IF_ERROR.
-#include "model/status.h"
+#include "model/base/status.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
 // A whole pass and its metrics against what the geometry fixes exactly.
-#include "solver/strip_path.h"
+#include "solver/strip/strip_path.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "solver/strip_path_metrics.h"
+#include "solver/strip/strip_path_metrics.h"
 #include "tests/analytic_surfaces.h"
 
 namespace tpopt {

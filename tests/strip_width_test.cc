@@ -1,14 +1,14 @@
 // Strip widths computed on the cross section against the closed-form
 // quadratic approximation w = 2 sqrt(2 h R_rel), 1/R_rel = 1/R_eff - k,
-// R_eff = r + R0 / sin(lead) (model/torus_cutter.h, model/strip_width.h),
+// R_eff = r + R0 / sin(lead) (model/cutter/torus_cutter.h, model/eval/strip_width.h),
 // and the three posture methods against what the geometry dictates.
-#include "model/strip_width.h"
+#include "model/eval/strip_width.h"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "solver/tool_posture.h"
+#include "solver/strip/tool_posture.h"
 #include "tests/analytic_surfaces.h"
 
 namespace tpopt {

@@ -1,13 +1,13 @@
-#include "solver/surface_placement.h"
+#include "solver/smooth/surface_placement.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
-#include "model/path_metrics.h"
-#include "solver/overhang.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
+#include "model/eval/path_metrics.h"
+#include "solver/spline/overhang.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -51,7 +51,7 @@ class SurfacePlacementTest : public ::testing::Test {
 
 // A clean DPO path with its tips on the floor (whose foot on rail 0 is its
 // contact) comes back as itself: the same axes, and tips that move only
-// along their axes (by the fitted overhang, solver/overhang.h, which
+// along their axes (by the fitted overhang, solver/spline/overhang.h, which
 // follows the pose heights within kOverhangNoiseMm; the DPO tip sits a
 // little above the floor along its tilted axis).
 TEST_F(SurfacePlacementTest, ACleanDpoPathKeepsItsAxesAndItsTipsOnThem) {

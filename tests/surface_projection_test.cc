@@ -1,5 +1,5 @@
 // Projection along a direction onto surfaces whose intersections are known.
-#include "model/surface_projection.h"
+#include "model/geometry/surface_projection.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-#include "solver/surface_side_cost.h"
+#include "solver/smooth/cost/surface_side_cost.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "model/machine.h"
+#include "model/machine/machine.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -18,9 +18,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "model/json_io.h"
-#include "model/random_cases.h"
-#include "solver/smoothing_pipeline.h"
+#include "model/io/json_io.h"
+#include "model/eval/random_cases.h"
+#include "solver/smooth/smoothing_pipeline.h"
 
 namespace tpopt::testing {
 

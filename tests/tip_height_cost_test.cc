@@ -1,4 +1,4 @@
-#include "solver/tip_height_cost.h"
+#include "solver/smooth/cost/tip_height_cost.h"
 
 #include <random>
 

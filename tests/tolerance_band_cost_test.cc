@@ -1,8 +1,8 @@
-#include "solver/tolerance_band_cost.h"
+#include "solver/smooth/cost/tolerance_band_cost.h"
 
 #include <gtest/gtest.h>
 
-#include "model/machine.h"
+#include "model/machine/machine.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

@@ -1,5 +1,5 @@
 // The torus cutter's distance and contact placement against its geometry.
-#include "model/torus_cutter.h"
+#include "model/cutter/torus_cutter.h"
 
 #include <cmath>
 #include <random>

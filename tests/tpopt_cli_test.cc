@@ -222,7 +222,7 @@ TEST(TpoptCliTest, RaisedFeedsShortenTheMachiningTimeWithinTheLimits) {
   const std::string jcde = SourcePath("data/machines/jcde2022_ac.json");
   const std::string cls = dir.File("hypar.cls");
   // At 150 mm/min: a blending planner reaches about 320 mm/min on these
-  // moves under jcde2022's rotary limits (model/planner_time.h), so x2 fits.
+  // moves under jcde2022's rotary limits (model/machine/planner_time.h), so x2 fits.
   ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + hypar + " --cutter_radius=4 --poses=80 "
                              "--feed=150 --out=" + cls)).exit_code,
             0);

@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "model/json_io.h"
-#include "model/path_generator.h"
+#include "model/io/json_io.h"
+#include "model/path/path_generator.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

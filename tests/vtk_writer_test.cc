@@ -1,4 +1,4 @@
-#include "model/vtk_writer.h"
+#include "model/io/vtk_writer.h"
 
 #include <gtest/gtest.h>
 

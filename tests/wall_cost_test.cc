@@ -1,10 +1,10 @@
-#include "solver/wall_cost.h"
+#include "solver/smooth/cost/wall_cost.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "model/json_io.h"
+#include "model/io/json_io.h"
 #include "tests/test_util.h"
 
 namespace tpopt {

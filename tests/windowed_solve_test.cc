@@ -1,13 +1,13 @@
 // windowed_solve on its own: on a problem whose exact solution is known,
 // the windows reproduce it, and they reproduce the whole-problem solve.
 //
-// The problem (surface-free, solver/tolerance_band_cost.h): the input is a
+// The problem (surface-free, solver/smooth/cost/tolerance_band_cost.h): the input is a
 // straight line at constant speed with A and C linear in the arc length, so
 // every residual family is exactly zero on it. The guess slides each tip
 // along the line by a wave of 5 um. The slide residual has full rank in
 // that direction and the smoothness families vanish only where the slide
 // does, so the input itself is the unique optimum from this guess.
-#include "solver/windowed_solve.h"
+#include "solver/smooth/windowed_solve.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/ceres_smoother.h"
+#include "solver/smooth/ceres_smoother.h"
 
 namespace tpopt {
 namespace {

@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "model/cad_io.h"
-#include "model/freeform_surface.h"
-#include "model/json_io.h"
+#include "model/cad/cad_io.h"
+#include "model/geometry/freeform_surface.h"
+#include "model/io/freeform_surface_json.h"
+#include "model/io/json_io.h"
 
 namespace tpopt {
 namespace {

@@ -4,7 +4,7 @@ each: compare.py LABEL=summary.json[,tpopt_report.json] ...
 
 With a tpopt report (tpopt smooth/evaluate --report), the column also shows
 tpopt's predicted time of the program it wrote (or read): on the planner
-(planner_time_s, model/planner_time.h) and at the feeds alone
+(planner_time_s, model/machine/planner_time.h) and at the feeds alone
 (machining_time_s).
 Exit 1 when a run did not complete."""
 import json

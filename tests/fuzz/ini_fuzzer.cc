@@ -4,7 +4,7 @@
 #include <sstream>
 #include <string>
 
-#include "model/linuxcnc_ini.h"
+#include "model/io/linuxcnc_ini.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));

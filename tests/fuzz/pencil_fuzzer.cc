@@ -4,8 +4,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "model/json_io.h"
-#include "model/surface_projection.h"
+#include "model/io/json_io.h"
+#include "model/geometry/surface_projection.h"
 #include "tests/fuzz/json_fuzz_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,0 +1,610 @@
+#include "solver/smooth/ceres_smoother.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <utility>
+
+#include <ceres/version.h>
+#include <glog/logging.h>
+
+#include "model/machine/axis_metrics.h"
+#include "model/base/invalid_field.h"
+#include "model/path/rail_projection.h"
+#include "model/path/standing_moves.h"
+#include "solver/smooth/coarse_to_fine.h"
+#include "solver/smooth/cost/axis_limit_cost.h"
+#include "solver/smooth/cost/deviation_cost.h"
+#include "solver/spline/overhang.h"
+#include "solver/smooth/cost/smoothness_cost.h"
+#include "solver/smooth/cost/tip_height_cost.h"
+#include "solver/smooth/cost/tolerance_band_cost.h"
+#include "solver/smooth/cost/wall_cost.h"
+
+namespace tpopt {
+namespace {
+
+// Divided differences need distinct abscissae; a repeated pose gets this
+// much arc length (mm) or time (s).
+constexpr double kMinStep = 1e-6;
+
+// Logs each Ceres iteration at verbosity 1 and passes it to the caller's
+// observer, if any.
+class IterationObserver : public ceres::IterationCallback {
+ public:
+  explicit IterationObserver(const std::function<void(int, double)>& observer)
+      : observer_(observer) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    VLOG(1) << "high_accuracy iter " << s.iteration << "  cost " << s.cost << "  change "
+            << -s.cost_change << "  |step| " << s.step_norm;
+    if (observer_) observer_(s.iteration, s.cost);
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  const std::function<void(int, double)>& observer_;
+};
+
+// Poses that may move: not rapid or link targets, on a cutting move, and not held
+// at an end of the problem (a window's seams, see solver/smooth/windowed_solve.h).
+std::vector<bool> FreePoses(const SmoothingInputs& in) {
+  const ToolPath& path = *in.input;
+  const size_t n = path.poses.size();
+  std::vector<bool> cutting(n, false);
+  for (size_t i = 0; i + 1 < n; ++i) {
+    if (!IsPositioningMove(path.poses[i + 1])) cutting[i] = cutting[i + 1] = true;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    const bool held = i < in.held_first || i + in.held_last >= n;
+    cutting[i] = cutting[i] && !IsPositioningMove(path.poses[i]) && !held;
+  }
+  return cutting;
+}
+
+// The moves a stencil may not span (the move into pose j of the path): the
+// limits stop only at rapids, because a link is a feed move the machine must
+// keep within its limits like any other; smoothness stops at rapids, links
+// and standing moves (model/path/standing_moves.h), which have no length to
+// differentiate over, but runs into a held pose. A held pose keeps its
+// target, yet the move into it is a cut the machine makes from the pose
+// before, which the solve moves: with no stencil across that move, the free
+// pose beside a held one (the last of a program, the start of a standing
+// move) may sit anywhere its band allows, and on 0.05 mm moves that jump
+// broke axis limits the input kept (issue 17). With the stencil the held pose
+// is the run's fixed end, as a rapid target is its fixed start.
+using StencilBreak = bool (*)(const ToolPath&, size_t j);
+bool IsRapid(const ToolPath& path, size_t j) { return path.poses[j].rapid; }
+bool BreaksSmoothness(const ToolPath& path, size_t j) {
+  const ToolPose& pose = path.poses[j];
+  if (pose.rapid || pose.link) return true;
+  return pose.held && (pose.p_w_tip - path.poses[j - 1].p_w_tip).norm() < kStandingMoveMm;
+}
+
+// True when no move between poses first..first+count-1 is a `breaks` move.
+bool Connected(const ToolPath& path, size_t first, size_t count, StencilBreak breaks) {
+  for (size_t j = first + 1; j < first + count; ++j) {
+    if (breaks(path, j)) return false;
+  }
+  return true;
+}
+
+template <int kCount>
+std::array<double, kCount> Window(const std::vector<double>& v, size_t first) {
+  std::array<double, kCount> out;
+  for (int j = 0; j < kCount; ++j) out[j] = v[first + j];
+  return out;
+}
+
+// Contact points on the ruling at u, and guard points on the rulings at
+// the given distances (mm along rail 0) either side: a cylinder that holds
+// its own ruling can still cut into rulings a millimetre or two away where
+// the surface twists, whatever the pose spacing.
+// Guards sit at the ruling's ends and middle only: a cylinder crossing the
+// twisted surface does so along its whole length, so three heights see it,
+// and they cost a third of guarding every contact height.
+DeviationCost::Points RulingPoints(const RuledSurface& surface, double u,
+                                   const std::vector<double>& guard_mm, int samples) {
+  const double speed_mm = std::max(surface.rail(0).Evaluate(u, 1)[1].norm(), 1e-9);
+  DeviationCost::Points points;
+  for (int k = 0; k < samples; ++k) points.contact_w.push_back(surface.Point(u, k / (samples - 1.0)));
+  for (double v : {0.0, 0.5, 1.0}) {
+    for (double d : guard_mm) {
+      for (double side : {-1.0, 1.0}) {
+        const double ug = u + side * d / speed_mm;
+        if (ug >= 0.0 && ug <= 1.0) points.guard_w.push_back(surface.Point(ug, v));
+      }
+    }
+  }
+  return points;
+}
+
+// Adds the stencils of one derivative family over every window that no
+// `breaks` move splits.
+template <int kOrder, typename MakeCost>
+void AddStencils(const ToolPath& path, const std::vector<bool>& free_pose, StencilBreak breaks,
+                 SmoothingState* state, ceres::Problem* problem, const std::string& family,
+                 MakeCost make_cost) {
+  const size_t n = path.poses.size();
+  for (size_t i = 0; i + kOrder < n; ++i) {
+    if (!Connected(path, i, kOrder + 1, breaks)) continue;
+    bool any_free = false;
+    std::vector<double*> blocks;
+    for (size_t j = i; j <= i + kOrder; ++j) {
+      any_free = any_free || free_pose[j];
+      blocks.push_back(state->poses[j].data());
+    }
+    if (!any_free) continue;
+    ceres::CostFunction* cost = make_cost(i);
+    if (cost == nullptr) continue;
+    state->families[family].push_back(problem->AddResidualBlock(cost, nullptr, blocks));
+  }
+}
+
+template <int kOrder>
+void AddLimitFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
+                    const std::vector<bool>& free_pose, SmoothingState* state,
+                    ceres::Problem* problem) {
+  std::array<double, 5> limits;
+  bool any = false;
+  for (int a = 0; a < 5; ++a) {
+    const AxisLimits& l = in.machine->limits[a];
+    limits[a] = kOrder == 1 ? l.max_velocity : kOrder == 2 ? l.max_acceleration : l.max_jerk;
+    any = any || std::isfinite(limits[a]);
+  }
+  if (!any || o.w_limits <= 0) return;
+  AddStencils<kOrder>(*in.input, free_pose, IsRapid, state, problem, "limits", [&](size_t i) {
+    const double h = (state->s_mm[i + kOrder] - state->s_mm[i]) / kOrder;
+    return AxisLimitCost<kOrder>::Create(Window<kOrder + 1>(state->t_s, i), limits,
+                                         in.machine->kinematics,
+                                         std::sqrt(o.w_limits * h / length_mm), o.limit_margin);
+  });
+}
+
+void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                        double length_mm, const std::vector<bool>& free_pose,
+                        SmoothingState* state, ceres::Problem* problem) {
+  DeviationCost::Settings settings{*in.cutter,       in.machine->kinematics, o.tolerance_mm,
+                                   o.overcut_factor, o.interpolation,        0.0};
+  const ToolPath& path = *in.input;
+  const size_t n = path.poses.size();
+  const int m = o.ruling_samples;
+  // Quadrature points per move: the pose it starts from and, on a move
+  // longer than between_min_move_mm, between_samples points inside it.
+  const auto parts_of_move = [&](size_t i) {
+    const bool long_move = state->s_mm[i + 1] - state->s_mm[i] >= o.between_min_move_mm;
+    return long_move ? o.between_samples + 1 : 1;
+  };
+  for (size_t i = 0; i < n; ++i) {
+    if (!free_pose[i]) continue;
+    const bool back_cut = i > 0 && !IsPositioningMove(path.poses[i]);
+    const double back = back_cut ? state->s_mm[i] - state->s_mm[i - 1] : 0;
+    const bool forward_cut = i + 1 < n && !IsPositioningMove(path.poses[i + 1]);
+    const double ahead = forward_cut ? state->s_mm[i + 1] - state->s_mm[i] : 0;
+    const int parts = forward_cut ? parts_of_move(i) : 1;
+    // The pose stands for half a part of each neighbouring move.
+    const double h_pose = back / (2.0 * (back_cut ? parts_of_move(i - 1) : 1)) + ahead / (2.0 * parts);
+    std::vector<ceres::ResidualBlockId>& ids = state->families["deviation"];
+    ids.push_back(problem->AddResidualBlock(
+        DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], o.guard_distances_mm, m), settings,
+                                    std::sqrt(o.w_deviation * h_pose / (length_mm * m))),
+        nullptr, state->poses[i].data()));
+    if (!forward_cut) continue;
+    for (int k = 1; k < parts; ++k) {
+      const double lambda = static_cast<double>(k) / parts;
+      const double u = (1 - lambda) * state->u[i] + lambda * state->u[i + 1];
+      const double scale = std::sqrt(o.w_deviation * ahead / parts / (length_mm * m));
+      ids.push_back(problem->AddResidualBlock(
+          DeviationCost::CreateBetweenPoses(
+              RulingPoints(*in.surface, u, o.guard_distances_mm, m), settings, scale, lambda),
+          nullptr, state->poses[i].data(), state->poses[i + 1].data()));
+    }
+  }
+}
+
+constexpr double kToleranceTargetFraction = 0.8;
+
+// The active set of points held to the tolerance: each on every move of
+// the path whose two contact rulings bracket its u, at the matching
+// fraction of the move.
+void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                        const std::vector<bool>& free_pose, SmoothingState* state,
+                        ceres::Problem* problem) {
+  if (in.surface == nullptr || in.tolerance_points == nullptr) return;
+  // Only a point's excess over kToleranceTargetFraction of the tolerance
+  // counts (the margin covers the gap between this point on the move and
+  // the judge's exact envelope).
+  DeviationCost::Settings settings{*in.cutter,       in.machine->kinematics, o.tolerance_mm,
+                                   o.overcut_factor, o.interpolation,
+                                   kToleranceTargetFraction * o.tolerance_mm};
+  const ToolPath& path = *in.input;
+  for (const TolerancePoint& point : *in.tolerance_points) {
+    const Eigen::Vector3d q_w = in.surface->Point(point.u, point.v);
+    const double scale = std::sqrt(o.w_deviation * point.weight);
+    for (size_t i = 0; i + 1 < path.poses.size(); ++i) {
+      if (IsPositioningMove(path.poses[i + 1]) || !(free_pose[i] || free_pose[i + 1])) continue;
+      const double u0 = state->u[i], u1 = state->u[i + 1];
+      if (point.u < std::min(u0, u1) || point.u > std::max(u0, u1)) continue;
+      const double lambda = u1 != u0 ? (point.u - u0) / (u1 - u0) : 0.0;
+      DeviationCost::Points points;
+      points.contact_w.push_back(q_w);
+      state->families["tolerance_points"].push_back(problem->AddResidualBlock(
+          DeviationCost::CreateBetweenPoses(std::move(points), settings, scale, lambda), nullptr,
+          state->poses[i].data(), state->poses[i + 1].data()));
+    }
+  }
+}
+
+// The walls every free pose stays within whatever the other families pull:
+// the machine's linear travel and, with a surface, the cone round the
+// input's axis and the cutter's side of the surface.
+void AddWallFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
+                   const std::vector<bool>& free_pose, SmoothingState* state,
+                   ceres::Problem* problem) {
+  if (o.w_walls <= 0) return;
+  const ToolPath& path = *in.input;
+  const size_t n = path.poses.size();
+  std::array<double, 3> lo, hi;
+  bool any_travel = false;
+  for (int j = 0; j < 3; ++j) {
+    lo[j] = in.machine->limits[j].min;
+    hi[j] = in.machine->limits[j].max;
+    any_travel = any_travel || std::isfinite(lo[j]) || std::isfinite(hi[j]);
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (!free_pose[i]) continue;
+    const double h = std::max(
+        (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2, kMinStep);
+    const double scale = std::sqrt(o.w_walls * h / length_mm);
+    WallCost::Walls walls;
+    if (any_travel) walls.travel.emplace(in.machine->kinematics, lo, hi, o.travel_margin_mm, scale);
+    if (in.surface != nullptr) {
+      const ToolPose& input = path.poses[i];
+      walls.cone.emplace(input.a_w, o.axis_cone_deg * M_PI / 180.0, scale);
+      std::array<SurfaceSideCost::End, 2> ends;
+      for (int k = 0; k < 2; ++k) {
+        ends[k].q_w = in.surface->Point(state->u[i], k);
+        ends[k].normal_w = in.surface->Normal(state->u[i], k);
+        const double height_mm = (ends[k].q_w - input.p_w_tip).dot(input.a_w);
+        ends[k].radius_mm = std::max(in.cutter->RadiusAt(height_mm), 1e-3);
+      }
+      walls.side.emplace(ends, scale);
+    }
+    if (!walls.travel && !walls.cone) continue;
+    state->families["walls"].push_back(
+        problem->AddResidualBlock(new WallCost(walls), nullptr, state->poses[i].data()));
+  }
+}
+
+// The band around the original program of every free pose (surface-free).
+ToleranceBandCost::Band BandOf(const ToolPath& path, const HighAccuracyOptions& o, size_t i) {
+  const size_t n = path.poses.size();
+  const size_t prev = i > 0 && !IsPositioningMove(path.poses[i]) ? i - 1 : i;
+  const size_t next = i + 1 < n && !IsPositioningMove(path.poses[i + 1]) ? i + 1 : i;
+  ToleranceBandCost::Band band;
+  band.p0_w = path.poses[i].p_w_tip;
+  band.a0_w = path.poses[i].a_w;
+  const Eigen::Vector3d chord = path.poses[next].p_w_tip - path.poses[prev].p_w_tip;
+  band.tangent_w = chord.norm() > 1e-12 ? Eigen::Vector3d(chord.normalized())
+                                        : Eigen::Vector3d::Zero();
+  band.step_mm = std::max(chord.norm() / std::max<size_t>(1, next - prev), 1e-3);
+  band.tolerance_mm = o.tolerance_mm;
+  band.angle_tolerance_rad = o.angle_tolerance_deg * M_PI / 180.0;
+  return band;
+}
+
+void AddToleranceFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                        double length_mm, const std::vector<bool>& free_pose,
+                        SmoothingState* state, ceres::Problem* problem) {
+  for (size_t i = 0; i < free_pose.size(); ++i) {
+    if (!free_pose[i]) continue;
+    const ToleranceBandCost::Band band = BandOf(*in.input, o, i);
+    state->families["tolerance"].push_back(problem->AddResidualBlock(
+        ToleranceBandCost::Create(band, std::sqrt(o.w_band * band.step_mm / length_mm),
+                                  o.slide_weight),
+        nullptr, state->poses[i].data()));
+  }
+}
+
+// Moves a pose back inside its band where the solve left it a little
+// outside, so that the surface-free promise holds exactly.
+bool ClampToBand(const ToleranceBandCost::Band& band, ToolPose* pose) {
+  bool clamped = false;
+  const Eigen::Vector3d d = pose->p_w_tip - band.p0_w;
+  const Eigen::Vector3d along = d.dot(band.tangent_w) * band.tangent_w;
+  const Eigen::Vector3d perp = d - along;
+  if (perp.norm() > band.tolerance_mm) {
+    pose->p_w_tip = band.p0_w + along + perp * (band.tolerance_mm / perp.norm());
+    clamped = true;
+  }
+  const double angle = std::acos(std::clamp(pose->a_w.dot(band.a0_w), -1.0, 1.0));
+  if (angle > band.angle_tolerance_rad) {
+    const Eigen::Vector3d axis = band.a0_w.cross(pose->a_w).normalized();
+    pose->a_w = Eigen::AngleAxisd(band.angle_tolerance_rad, axis) * band.a0_w;
+    clamped = true;
+  }
+  return clamped;
+}
+
+}  // namespace
+
+bool HighAccuracyOptions::IsValid(std::string* why) const {
+  FirstInvalid check;
+  auto finite_at_least = [](double v, double lo) { return v >= lo && std::isfinite(v); };
+  check.Require(tolerance_mm > 0 && std::isfinite(tolerance_mm),
+          InvalidField("--tolerance_mm", tolerance_mm, "finite and > 0"));
+  check.Require(finite_at_least(overcut_factor, 1),
+          InvalidField("--overcut_factor", overcut_factor, "finite and >= 1"));
+  const std::pair<const char*, double> weights[] = {
+      {"--w_deviation", w_deviation},   {"--w_second", w_second},
+      {"--w_third", w_third},           {"--w_tip_second", w_tip_second},
+      {"--w_tip_third", w_tip_third},   {"--w_limits", w_limits},
+      {"--w_tip_height", w_tip_height}, {"--w_walls", w_walls}};
+  for (const auto& [flag, w] : weights) {
+    check.Require(finite_at_least(w, 0), InvalidField(flag, w, "finite and >= 0"));
+  }
+  check.Require(axis_cone_deg > 0 && axis_cone_deg <= 90,
+          InvalidField("--axis_cone_deg", axis_cone_deg, "in (0, 90]"));
+  check.Require(travel_margin_mm > 0 && std::isfinite(travel_margin_mm),
+          InvalidField("travel_margin_mm", travel_margin_mm, "finite and > 0"));
+  check.Require(limit_margin > 0 && limit_margin <= 1,
+          InvalidField("--limit_margin", limit_margin, "in (0, 1]"));
+  for (size_t k = 0; k < guard_distances_mm.size(); ++k) {
+    const double d = guard_distances_mm[k];
+    check.Require(d > 0 && std::isfinite(d),
+            InvalidField("guard_distances_mm[" + std::to_string(k) + "]", d, "finite and > 0"));
+  }
+  check.Require(finite_at_least(between_min_move_mm, 0),
+          InvalidField("between_min_move_mm", between_min_move_mm, "finite and >= 0"));
+  check.Require(ruling_samples >= 2, InvalidField("--ruling_samples", ruling_samples, ">= 2"));
+  check.Require(between_samples >= 0, InvalidField("--between_samples", between_samples, ">= 0"));
+  check.Require(angle_tolerance_deg > 0,
+          InvalidField("--angle_tolerance_deg", angle_tolerance_deg, "> 0"));
+  check.Require(w_band > 0, InvalidField("w_band", w_band, "> 0"));
+  check.Require(slide_weight >= 0, InvalidField("slide_weight", slide_weight, ">= 0"));
+  check.Require(default_feed_mm_per_min > 0,
+          InvalidField("--feed", default_feed_mm_per_min, "> 0 mm/min"));
+  check.Require(window_poses == 0 || window_poses >= 100,
+          InvalidField("--window_poses", window_poses, "0 (no windows) or >= 100"));
+  check.Require(pole_window_path_poses >= 0,
+          InvalidField("--pole_window_path_poses", pole_window_path_poses, ">= 0"));
+  check.Require(coarse_poses >= 0, InvalidField("--coarse_poses", coarse_poses, ">= 0"));
+  check.Require(refine_iterations >= 0,
+          InvalidField("--refine_iterations", refine_iterations, ">= 0"));
+  check.Require(pole_passage_deg >= 0 && pole_passage_deg < 90,
+          InvalidField("--pole_passage_deg", pole_passage_deg, "in [0, 90)"));
+  check.Require(max_iterations >= 0, InvalidField("--max_iterations", max_iterations, ">= 0"));
+  check.Require(num_threads >= 1, InvalidField("--num_threads", num_threads, ">= 1"));
+  return check.Report(why);
+}
+
+HighAccuracyOptions HighAccuracyOptions::SurfaceFree() {
+  HighAccuracyOptions options;
+  options.w_second = 1e6;
+  options.w_third = 0.0;
+  options.w_tip_second = 0.0;
+  return options;
+}
+
+Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                    SmoothingState* state, ceres::Problem* problem) {
+  CHECK(in.input && in.cutter && in.machine && state && problem);
+  const ToolPath& guess = in.initial_guess ? *in.initial_guess : *in.input;
+  const ToolPath& path = *in.input;
+  const size_t n = path.poses.size();
+  if (guess.poses.size() != n) {
+    return Status::Error("initial guess has " + std::to_string(guess.poses.size()) +
+                         " poses, the input " + std::to_string(n));
+  }
+  std::vector<JointVector> joints;
+  Status s = in.machine->AssignJoints(guess, &joints);
+  if (!s.ok()) return s;
+  state->poses.resize(n);
+  state->s_mm.assign(n, 0.0);
+  state->t_s.assign(n, 0.0);
+  state->u = in.surface ? ProjectPathOntoRail(in.surface->rail(0), path)
+                        : std::vector<double>(n, 0.0);
+  // Arc length of the contact along rail 0, not of the tip: in a tight
+  // concave bend the tip hardly moves while the contact sweeps the bend,
+  // and a tip parameter would crush the deviation weight and blow up the
+  // derivatives there. Repeated poses get a floor of 1e-3 of the mean
+  // step, so that divided differences stay finite and tame.
+  std::vector<double> ds(n, 0.0);
+  double total_mm = 0.0;
+  for (size_t i = 1; i < n; ++i) {
+    ds[i] = in.surface ? (in.surface->rail(0).Point(state->u[i]) -
+                          in.surface->rail(0).Point(state->u[i - 1]))
+                             .norm()
+                       : (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
+    total_mm += ds[i];
+  }
+  const double floor_mm = std::max(kMinStep, 1e-3 * total_mm / std::max<size_t>(1, n - 1));
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d& p = guess.poses[i].p_w_tip;
+    state->poses[i] = {joints[i][kA], joints[i][kC], p.x(), p.y(), p.z()};
+    if (i == 0) continue;
+    state->s_mm[i] = state->s_mm[i - 1] + std::max(ds[i], floor_mm);
+    const double dt = SegmentTime(*in.machine, path, joints, i - 1, o.default_feed_mm_per_min);
+    state->t_s[i] = state->t_s[i - 1] + std::max(dt, kMinStep);
+  }
+  const double length_mm = std::max(state->s_mm.back(), kMinStep);
+  const std::vector<bool> free_pose = FreePoses(in);
+  const AxisLimits& a_travel = in.machine->limits[kA];
+  for (size_t i = 0; i < n; ++i) {
+    double* pose = state->poses[i].data();
+    problem->AddParameterBlock(pose, kPoseSize);
+    if (!free_pose[i]) {
+      problem->SetParameterBlockConstant(pose);
+      continue;
+    }
+    // The flank distance does not change when the axis is reversed about
+    // the tip, so nothing but the travel keeps a pose from flipping over.
+    if (std::isfinite(a_travel.min)) problem->SetParameterLowerBound(pose, kPoseA, a_travel.min);
+    if (std::isfinite(a_travel.max)) problem->SetParameterUpperBound(pose, kPoseA, a_travel.max);
+  }
+  if (in.surface == nullptr) {
+    AddToleranceFamily(in, o, length_mm, free_pose, state, problem);
+  } else {
+    AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
+  }
+  AddWallFamily(in, o, length_mm, free_pose, state, problem);
+  AddTolerancePoints(in, o, free_pose, state, problem);
+  std::vector<double> overhang_mm;
+  if (in.surface != nullptr) {
+    s = PoseOverhangs(in.surface->rail(0), path, state->u, &overhang_mm);
+    if (!s.ok()) return s;
+  }
+  for (size_t i = 0; i < n; ++i) {
+    if (!free_pose[i] || o.w_tip_height <= 0 || in.surface == nullptr) continue;
+    const double h = (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2;
+    const Eigen::Vector3d floor_w = in.surface->rail(0).Point(state->u[i]);
+    state->families["tip_height"].push_back(problem->AddResidualBlock(
+        TipHeightCost::Create(floor_w, overhang_mm[i],
+                              std::sqrt(o.w_tip_height * h / length_mm) / o.tolerance_mm),
+        nullptr, state->poses[i].data()));
+  }
+  // A family whose weights are all zero adds nothing but work: its zero
+  // Jacobians still go through the linear algebra (more than half the
+  // surface-free preset's solve, which sets w_third = 0).
+  if (o.w_second > 0 || o.w_tip_second > 0) {
+    AddStencils<2>(path, free_pose, BreaksSmoothness, state, problem, "second", [&](size_t i) {
+      return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm, o.w_second,
+                                       o.w_tip_second);
+    });
+  }
+  if (o.w_third > 0 || o.w_tip_third > 0) {
+    AddStencils<3>(path, free_pose, BreaksSmoothness, state, problem, "third", [&](size_t i) {
+      return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm, o.w_third,
+                                       o.w_tip_third);
+    });
+  }
+  AddLimitFamily<1>(in, o, length_mm, free_pose, state, problem);
+  AddLimitFamily<2>(in, o, length_mm, free_pose, state, problem);
+  AddLimitFamily<3>(in, o, length_mm, free_pose, state, problem);
+  return Status::Ok();
+}
+
+namespace {
+
+// Index of the distinct pose each pose repeats (itself when it moves).
+std::vector<size_t> DistinctIndex(const ToolPath& path) {
+  std::vector<size_t> index(path.poses.size());
+  size_t distinct = 0;
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    const bool repeat = i > 0 && !IsPositioningMove(path.poses[i]) &&
+                        (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm() < 1e-9 &&
+                        (path.poses[i].a_w - path.poses[i - 1].a_w).norm() < 1e-12;
+    if (i > 0 && !repeat) ++distinct;
+    index[i] = distinct;
+  }
+  return index;
+}
+
+ToolPath Distinct(const ToolPath& path, const std::vector<size_t>& index) {
+  ToolPath out = WithoutPoses(path);
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    if (i == 0 || index[i] != index[i - 1]) out.poses.push_back(path.poses[i]);
+  }
+  return out;
+}
+
+}  // namespace
+
+Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                          ToolPath* out, HighAccuracyReport* report) {
+  CHECK(inputs.input != nullptr);
+  // CAM files repeat poses; a repeat carries no motion and would give the
+  // divided differences a zero step, so the problem is solved over the
+  // distinct poses and each repeat takes its original's result.
+  const std::vector<size_t> index = DistinctIndex(*inputs.input);
+  if (index.empty() || index.back() + 1 == index.size()) {
+    return SolveCoarseToFine(inputs, options, out, report);
+  }
+  const ToolPath input = Distinct(*inputs.input, index);
+  const ToolPath guess = Distinct(inputs.initial_guess ? *inputs.initial_guess : *inputs.input, index);
+  SmoothingInputs distinct = inputs;
+  distinct.input = &input;
+  distinct.initial_guess = &guess;
+  ToolPath solved;
+  Status s = SolveCoarseToFine(distinct, options, &solved, report);
+  if (!s.ok()) return s;
+  *out = *inputs.input;
+  for (size_t i = 0; i < out->poses.size(); ++i) {
+    out->poses[i].p_w_tip = solved.poses[index[i]].p_w_tip;
+    out->poses[i].a_w = solved.poses[index[i]].a_w;
+  }
+  return Status::Ok();
+}
+
+Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOptions& options,
+                         ToolPath* out, HighAccuracyReport* report) {
+  std::string why;
+  if (!options.IsValid(&why)) return Status::Error("high_accuracy options: " + why);
+  const auto start = std::chrono::steady_clock::now();
+  ceres::Problem problem;
+  SmoothingState state;
+  Status s = BuildProblem(inputs, options, &state, &problem);
+  if (!s.ok()) return s;
+
+  ceres::Solver::Options solver_options;
+  solver_options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  solver_options.max_num_iterations = options.max_iterations;
+  solver_options.function_tolerance = options.function_tolerance;
+  solver_options.num_threads = options.num_threads;
+  solver_options.logging_type = ceres::SILENT;
+  IterationObserver observer(options.on_iteration);
+  solver_options.callbacks.push_back(&observer);
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+
+  report->converged = summary.IsSolutionUsable();
+  report->message = summary.message;
+  report->iterations = static_cast<int>(summary.iterations.size()) - 1;
+  report->initial_cost = summary.initial_cost;
+  report->final_cost = summary.final_cost;
+  for (const auto& [family, blocks] : state.families) {
+    ceres::Problem::EvaluateOptions eval;
+    eval.residual_blocks = blocks;
+    double cost = 0.0;
+    problem.Evaluate(eval, &cost, nullptr, nullptr, nullptr);
+    report->final_cost_by_family[family] = cost;
+  }
+  *out = *inputs.input;
+  const std::vector<bool> free_pose = FreePoses(inputs);
+  const ToolPath& guess = inputs.initial_guess ? *inputs.initial_guess : *inputs.input;
+  for (size_t i = 0; i < out->poses.size(); ++i) {
+    if (!free_pose[i]) {
+      // Held: the guess itself, not its round trip through A and C (which
+      // would move it by ~1e-16 and break a seam's exact match).
+      out->poses[i].p_w_tip = guess.poses[i].p_w_tip;
+      out->poses[i].a_w = guess.poses[i].a_w;
+      continue;
+    }
+    const auto& p = state.poses[i];
+    out->poses[i].p_w_tip = Eigen::Vector3d(p[kPoseTip], p[kPoseTip + 1], p[kPoseTip + 2]);
+    out->poses[i].a_w = AnglesToAxis<double>(p[kPoseA], p[kPoseC]);
+    if (inputs.surface == nullptr && free_pose[i]) {
+      report->poses_clamped += ClampToBand(BandOf(*inputs.input, options, i), &out->poses[i]);
+    }
+  }
+  report->solve_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Every solve, at every coarse level and in every window, is held to the
+  // travel here, where its own poses are known: judged only on the final
+  // path, a level's excursion would surface later as an error about a pose
+  // the input never had.
+  std::vector<JointVector> joints;
+  s = inputs.machine->AssignJoints(*out, &joints);
+  if (s.ok()) s = inputs.machine->CheckTravel(*out, joints);
+  if (!s.ok()) {
+    return Status::Error("a solve over " + std::to_string(out->poses.size()) +
+                         " poses moved a pose out of the machine (the value is the solver's; "
+                         "the input fits): " + s.message());
+  }
+  return Status::Ok();
+}
+
+std::string CeresVersion() { return CERES_VERSION_STRING; }
+
+}  // namespace tpopt

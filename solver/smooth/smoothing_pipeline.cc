@@ -1,0 +1,757 @@
+#include "solver/smooth/smoothing_pipeline.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+#include <glog/logging.h>
+
+#include "model/machine/axis_metrics.h"
+#include "model/path/rail_projection.h"
+#include "solver/smooth/surface_placement.h"
+#include "solver/smooth/both_ways_round_poles.h"
+
+namespace tpopt {
+namespace {
+
+// A smoother that moves a pose outside the travel writes a program the
+// machine stops on, so both ends of the run are held to it.
+Status WithinTravel(const Machine& machine, const ToolPath& path) {
+  std::vector<JointVector> joints;
+  Status s = machine.AssignJoints(path, &joints);
+  if (s.ok()) s = machine.CheckTravel(path, joints);
+  return s;
+}
+
+// The stated tolerance is a promise about what the smoother does to the
+// path, judged on the exact swept envelope (not the solver's sample points):
+// no point of the surface may end up farther from the cutter than the
+// tolerance unless the input was farther still there (at poses the smoother
+// must hold, such as the targets of rapids, the input's error stands).
+// Returns the grid points (indices into out.deviation_mm) that break it;
+// `slack_mm` is how far past the input's error counts as the input's (the
+// same moves evaluated again can differ in the last bits).
+std::vector<size_t> BeyondTolerance(const DeviationReport& in, const DeviationReport& out,
+                                    double tolerance_mm, double slack_mm = 0.0) {
+  CHECK_EQ(in.deviation_mm.size(), out.deviation_mm.size());
+  std::vector<size_t> beyond;
+  for (size_t k = 0; k < out.deviation_mm.size(); ++k) {
+    const double d = std::abs(out.deviation_mm[k]);
+    if (d > tolerance_mm && d > std::abs(in.deviation_mm[k]) + slack_mm) beyond.push_back(k);
+  }
+  return beyond;
+}
+
+// Why the result is refused: how many points are beyond, and the worst.
+std::string BeyondToleranceMessage(const DeviationReport& in, const DeviationReport& out,
+                                   const std::vector<size_t>& beyond, double tolerance_mm) {
+  CHECK(!beyond.empty());
+  const size_t worst = *std::max_element(beyond.begin(), beyond.end(), [&](size_t a, size_t b) {
+    return std::abs(out.deviation_mm[a]) < std::abs(out.deviation_mm[b]);
+  });
+  const size_t nv = out.v.size();
+  std::ostringstream err;
+  err << "the best path found is " << std::abs(out.deviation_mm[worst]) << " mm "
+      << (out.deviation_mm[worst] < 0 ? "into" : "short of") << " the surface at (u "
+      << out.u[worst / nv] << ", v " << out.v[worst % nv] << "), where the input was "
+      << std::abs(in.deviation_mm[worst]) << " mm: beyond the tolerance of " << tolerance_mm
+      << " mm at " << beyond.size() << " of " << out.deviation_mm.size() << " grid points";
+  return err.str();
+}
+
+// The tolerance is a constraint, not a weight: the points a solve leaves
+// beyond it join an active set that the next solve holds with a penalty of
+// its own (ceres_smoother.h, TolerancePoint), multiplied by kPenaltyGrowth
+// each round a point is still beyond, so that the rest of the surface keeps
+// the weights the smoothing was tuned with. After kToleranceRounds rounds
+// what is still beyond is taken to be infeasible and refused.
+constexpr int kToleranceRounds = 4;
+constexpr double kFirstPenalty = 10.0;
+constexpr double kPenaltyGrowth = 10.0;
+
+// Adds the grid points `beyond` and their four neighbours on the grid to
+// `active` (a point held alone hands its excess to the next grid point
+// along u), or raises the penalty of those in it already.
+void GrowActiveSet(const DeviationReport& out, const std::vector<size_t>& beyond,
+                   std::vector<TolerancePoint>* active) {
+  const int nu = static_cast<int>(out.u.size()), nv = static_cast<int>(out.v.size());
+  std::vector<TolerancePoint> grown = *active;
+  for (size_t k : beyond) {
+    const int iu = static_cast<int>(k) / nv, iv = static_cast<int>(k) % nv;
+    const int offsets[5][2] = {{0, 0}, {-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+    for (const auto& d : offsets) {
+      const int ju = iu + d[0], jv = iv + d[1];
+      if (ju < 0 || ju >= nu || jv < 0 || jv >= nv) continue;
+      const double u = out.u[ju], v = out.v[jv];
+      auto same = [&](const TolerancePoint& p) { return p.u == u && p.v == v; };
+      auto it = std::find_if(grown.begin(), grown.end(), same);
+      if (it == grown.end()) {
+        grown.push_back({u, v, kFirstPenalty});
+      } else if (std::find_if(active->begin(), active->end(), same) != active->end() &&
+                 d[0] == 0 && d[1] == 0) {
+        // Held in the last solve and still beyond: hold it harder.
+        it->weight *= kPenaltyGrowth;
+      }
+    }
+  }
+  *active = std::move(grown);
+}
+
+// What the put-back judges a cutting run by (runs as RunEnd splits them):
+// its peak |d2A/ds2| and |d2C/ds2| over the samples at its poses, and the
+// axis-limit violations of the run evaluated alone from the pose before it
+// (so a run's count does not depend on the runs around it).
+struct RunFigures {
+  std::array<double, 2> peak_d2 = {0.0, 0.0};
+  int limit_violations = 0;
+};
+
+Status RunPeaks(const ToolPath& path, const Machine& machine, double default_feed_mm_per_min,
+                std::vector<RunFigures>* runs) {
+  std::vector<JointVector> joints;
+  Status s = machine.AssignJoints(path, &joints);
+  if (!s.ok()) return s;
+  const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
+  MotionOptions motion;
+  motion.default_feed_mm_per_min = default_feed_mm_per_min;
+  runs->clear();
+  for (size_t first = 0; first < path.poses.size();) {
+    const size_t end = RunEnd(path, first);
+    RunFigures run;
+    for (size_t i = first; i < end; ++i) {
+      run.peak_d2[0] = std::max(run.peak_d2[0], SecondDerivativePerMm2(path, joints, m, i, kA));
+      run.peak_d2[1] = std::max(run.peak_d2[1], SecondDerivativePerMm2(path, joints, m, i, kC));
+    }
+    const size_t from = first > 0 ? first - 1 : 0;
+    ToolPath alone = WithoutPoses(path);
+    alone.poses.assign(path.poses.begin() + from, path.poses.begin() + end);
+    const std::vector<JointVector> alone_joints(joints.begin() + from, joints.begin() + end);
+    run.limit_violations = EvaluateMotion(machine, alone, alone_joints, motion).limit_violations;
+    runs->push_back(run);
+    first = end;
+  }
+  return Status::Ok();
+}
+
+// Where each cutting run of `path` starts, with path.poses.size() last.
+std::vector<size_t> RunStarts(const ToolPath& path) {
+  std::vector<size_t> first;
+  for (size_t i = 0; i < path.poses.size(); i = RunEnd(path, i)) first.push_back(i);
+  first.push_back(path.poses.size());
+  return first;
+}
+
+// `output` with the runs r where back[r] replaced by the same runs of
+// `input` (the two paths' runs pair up, RunStarts of each).
+ToolPath ComposeRuns(const ToolPath& input, const ToolPath& output, const std::vector<bool>& back) {
+  const std::vector<size_t> in_first = RunStarts(input), out_first = RunStarts(output);
+  CHECK_EQ(in_first.size(), back.size() + 1);
+  CHECK_EQ(out_first.size(), back.size() + 1);
+  ToolPath composed = WithoutPoses(output);
+  for (size_t r = 0; r < back.size(); ++r) {
+    const ToolPath& from = back[r] ? input : output;
+    const std::vector<size_t>& first = back[r] ? in_first : out_first;
+    composed.poses.insert(composed.poses.end(), from.poses.begin() + first[r],
+                          from.poses.begin() + first[r + 1]);
+  }
+  return composed;
+}
+
+// What a run of the output may not be worse than the input's on.
+struct NoWorseOn {
+  bool d2 = true;       // peak d2A/ds2 and d2C/ds2
+  bool limits = false;  // axis-limit violations
+};
+
+// Puts back as programmed every run of `output` whose peak d2A/ds2 or
+// d2C/ds2 (with `on.d2`) or limit violations (with `on.limits`) exceed
+// those of the same run of `input`, so that the program as a whole is no
+// worse on either; `back` (one flag a run) says which, and may come in with
+// runs already put back. A run's first sample also sees the last pose of the
+// run before, which a method may move: a run put back that is still worse
+// puts its predecessor back too, until none is (at worst the whole input).
+// False, with nothing changed, when the two paths' runs do not pair up
+// (which no method makes) or joints cannot be assigned.
+bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double default_feed_mm_per_min,
+                     NoWorseOn on, ToolPath* output, std::vector<bool>* back) {
+  std::vector<RunFigures> before, after;
+  if (!RunPeaks(input, machine, default_feed_mm_per_min, &before).ok() ||
+      !RunPeaks(*output, machine, default_feed_mm_per_min, &after).ok() ||
+      before.size() != after.size()) {
+    return false;
+  }
+  const size_t runs = before.size();
+  if (back->size() != runs) back->assign(runs, false);
+  ToolPath composed = ComposeRuns(input, *output, *back);
+  if (!RunPeaks(composed, machine, default_feed_mm_per_min, &after).ok()) return false;
+  // Round-off of the written 6 decimals is no worsening.
+  constexpr double kSlack = 1e-9;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (size_t r = 0; r < runs; ++r) {
+      const bool worse_d2 = after[r].peak_d2[0] > before[r].peak_d2[0] + kSlack ||
+                            after[r].peak_d2[1] > before[r].peak_d2[1] + kSlack;
+      const bool worse_limits = after[r].limit_violations > before[r].limit_violations;
+      if (!(on.d2 && worse_d2) && !(on.limits && worse_limits)) continue;
+      if (!(*back)[r]) {
+        (*back)[r] = changed = true;
+      } else if (r > 0 && !(*back)[r - 1]) {
+        (*back)[r - 1] = changed = true;
+      }
+    }
+    if (!changed) break;
+    composed = ComposeRuns(input, *output, *back);
+    if (!RunPeaks(composed, machine, default_feed_mm_per_min, &after).ok()) return false;
+  }
+  *output = std::move(composed);
+  return true;
+}
+
+using Evaluator = std::function<Status(const std::string& what, const ToolPath& path,
+                                        PathMetrics* metrics)>;
+
+// Judges a path as the job's (its surface, cutter and machine) with
+// `*deviation` as it stands when called, telling settings.on_stage.
+Evaluator JudgeOf(const SmoothingJob& job, const SmoothingSettings& settings,
+                  const DeviationOptions* deviation) {
+  return [&job, &settings, deviation](const std::string& what, const ToolPath& path,
+                                      PathMetrics* metrics) {
+    if (settings.on_stage) settings.on_stage("evaluating " + what);
+    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, *deviation,
+                        settings.motion, metrics);
+  };
+}
+
+// High accuracy, a step after the solve and its tolerance check: the runs
+// the solve made worse on peak d2A/ds2 or d2C/ds2 go back as programmed
+// (KeepRunsNoWorse), so the mode never returns a program worse on either.
+// A put-back run is the input's own poses, so where it alone cuts, the
+// deviation is the input's and the tolerance (which spares what the input
+// left) holds there. Where a put-back run and a moved neighbour both reach a
+// point, the mix can leave it farther than either did: if the composed
+// program breaks the tolerance (when `tolerance_mm` > 0), the neighbours of
+// the put-back runs go back too, until it holds (at worst the whole input,
+// which the tolerance never refuses). On success result->output and
+// output_at_input_feed are the composed program's, and runs_kept_as_input
+// counts the runs put back.
+// A put-back run's moves evaluated in the composed path give the input's
+// deviation to round-off (seen: 1e-17 mm above it); a nanometre is far
+// below any tolerance.
+constexpr double kSameMovesSlackMm = 1e-6;
+
+Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per_min,
+                             NoWorseOn on, double tolerance_mm, const Evaluator& evaluate,
+                             std::vector<bool> back, SmoothingResult* result) {
+  for (;;) {
+    ToolPath composed = result->output;
+    if (!KeepRunsNoWorse(*job.input, *job.machine, default_feed_mm_per_min, on, &composed,
+                         &back)) {
+      return Status::Ok();
+    }
+    const int kept = static_cast<int>(std::count(back.begin(), back.end(), true));
+    if (kept == 0) return Status::Ok();
+    PathMetrics metrics;
+    Status s = evaluate("the output with " + std::to_string(kept) + " runs kept as programmed",
+                        composed, &metrics);
+    if (s.ok()) s = WithinTravel(*job.machine, composed);
+    if (!s.ok()) return s;
+    if (tolerance_mm <= 0.0 || kept == static_cast<int>(back.size()) ||
+        BeyondTolerance(*result->input_metrics.deviation, *metrics.deviation, tolerance_mm,
+                        kSameMovesSlackMm)
+            .empty()) {
+      result->output = std::move(composed);
+      result->output_at_input_feed = std::move(metrics);
+      result->runs_kept_as_input = kept;
+      return Status::Ok();
+    }
+    std::vector<bool> grown = back;
+    for (size_t r = 0; r < back.size(); ++r) {
+      if (!back[r]) continue;
+      if (r > 0) grown[r - 1] = true;
+      if (r + 1 < back.size()) grown[r + 1] = true;
+    }
+    if (grown == back) grown.assign(back.size(), true);
+    back = std::move(grown);
+  }
+}
+
+// One flag per cutting run of `input` (RunStarts): whether the run's
+// contact rulings (its poses' feet on rail 0) span the u of one of the grid
+// points `beyond` of `report`, give or take one grid step (the cutter
+// reaches a little past its contact ruling).
+std::vector<bool> RunsReaching(const RuledSurface& surface, const ToolPath& input,
+                               const DeviationReport& report, const std::vector<size_t>& beyond) {
+  const std::vector<size_t> first = RunStarts(input);
+  const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), input);
+  const size_t nv = report.v.size();
+  const double step = report.u.size() > 1 ? std::abs(report.u[1] - report.u[0]) : 0.0;
+  std::vector<bool> reach(first.size() - 1, false);
+  for (size_t r = 0; r + 1 < first.size(); ++r) {
+    const auto [lo, hi] = std::minmax_element(u.begin() + first[r], u.begin() + first[r + 1]);
+    for (size_t k : beyond) {
+      const double uk = report.u[k / nv];
+      if (uk >= *lo - step && uk <= *hi + step) reach[r] = true;
+    }
+  }
+  return reach;
+}
+
+Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure* failure) {
+  *failure = kind;
+  return Status::Error(message);
+}
+
+// Everything RunSmoothing does but the feed schedule, with one cutter for
+// the whole path; `guess_out`, if not null, receives the high-accuracy
+// solve's starting path (the input in spline mode).
+Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& settings,
+                           SmoothingResult* result, SmoothingFailure* failure,
+                           ToolPath* guess_out) {
+  if (guess_out != nullptr) *guess_out = *job.input;
+  const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
+  const auto& poses = job.input->poses;
+  const auto second = poses.begin() + std::min<size_t>(1, poses.size());
+  const bool feeds = std::any_of(second, poses.end(), [](const ToolPose& p) { return !p.rapid; });
+  const bool cuts =
+      std::any_of(second, poses.end(), [](const ToolPose& p) { return !IsPositioningMove(p); });
+  if (!feeds) {
+    return Fail(SmoothingFailure::kBadInput,
+                "the path has no cutting move to smooth (" + std::to_string(poses.size()) +
+                    " poses)",
+                failure);
+  }
+  auto stage = [&](const std::string& name) {
+    if (settings.on_stage) settings.on_stage(name);
+  };
+  // With judge_on_input_range every path is judged on one grid: the
+  // input's covered range (or the one asked for), never the range a
+  // smoothed path happens to cover.
+  DeviationOptions deviation = settings.deviation;
+  const Evaluator evaluate = JudgeOf(job, settings, &deviation);
+  Status s = evaluate("the input", *job.input, &result->input_metrics);
+  // (The range itself, not the grid's ends: u_min + (u_max - u_min) i / n
+  // can round past 1 at the last point.)
+  if (s.ok() && job.surface != nullptr && settings.judge_on_input_range &&
+      std::isnan(deviation.u_min)) {
+    CoveredRangeU(*job.surface, *job.input, &deviation.u_min, &deviation.u_max);
+  }
+  if (s.ok()) s = WithinTravel(*job.machine, *job.input);
+  if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+  if (!cuts) {
+    // Every feed move is one to keep as programmed (held, such as a
+    // program of pure rotary moves, or a link): the program goes out as it
+    // came, with nothing smoothed.
+    result->output = *job.input;
+    result->output_at_input_feed = result->output_metrics = result->input_metrics;
+    return Status::Ok();
+  }
+
+  const SplineSmootherOptions spline_options =
+      high_accuracy ? ForHighAccuracyGuess(settings.spline) : settings.spline;
+  ToolPath spline_path;
+  stage("spline smoothing");
+  s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
+                        &spline_path, &result->spline);
+  // The input was read and fits the machine: a method that fails on it fails
+  // as a solver.
+  if (!s.ok()) return Fail(SmoothingFailure::kSolver, "spline smoothing: " + s.message(), failure);
+
+  // Resamples result->output if asked, evaluates it and holds it to the
+  // machine's travel.
+  auto finish_output = [&]() {
+    if (settings.resample_step_mm > 0) {
+      stage("resampling");
+      ResampleOptions resample;
+      resample.step_mm = settings.resample_step_mm;
+      Status r = ResamplePath(result->output, *job.machine, resample, &result->output);
+      if (!r.ok()) return Fail(SmoothingFailure::kBadInput, "resampling: " + r.message(), failure);
+    }
+    Status r = evaluate("the output", result->output, &result->output_at_input_feed);
+    if (r.ok()) r = WithinTravel(*job.machine, result->output);
+    if (!r.ok()) {
+      return Fail(SmoothingFailure::kSolver,
+                  "the smoothed path does not fit the machine (" + r.message() + ")", failure);
+    }
+    return Status::Ok();
+  };
+  if (!high_accuracy) {
+    result->output = std::move(spline_path);
+    std::vector<bool> back;
+    if (settings.keep_runs_no_worse &&
+        KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
+                        NoWorseOn(), &result->output, &back)) {
+      result->runs_kept_as_input = static_cast<int>(std::count(back.begin(), back.end(), true));
+    }
+    s = finish_output();
+    if (!s.ok()) return s;
+  } else {
+    // Without a surface the band around the program is the only measure of
+    // accuracy, and the input is the one start known to lie inside it. With
+    // one, the start is the spline path or the poses placed on the surface
+    // at their own contacts (solver/smooth/surface_placement.h), whichever the
+    // judge finds nearer the surface: a noisy CAM path's spline stays as far
+    // off as the input (tenths of a millimetre), and the solve from there
+    // ends in a local minimum.
+    ToolPath placed;
+    bool start_placed = false;
+    if (job.surface != nullptr) {
+      s = evaluate("the spline start", spline_path, &result->initial_guess_metrics);
+      if (!s.ok()) return Fail(SmoothingFailure::kSolver, "spline start: " + s.message(), failure);
+      stage("placing the poses on the surface");
+      PathMetrics placed_metrics;
+      s = PlaceOnSurface(*job.input, *job.surface, *job.cutter, &placed);
+      if (s.ok()) s = evaluate("the placed start", placed, &placed_metrics);
+      if (!s.ok()) return Fail(SmoothingFailure::kSolver, "placement: " + s.message(), failure);
+      if (WorstDeviationMm(placed_metrics) < WorstDeviationMm(result->initial_guess_metrics)) {
+        start_placed = true;
+        result->initial_guess_metrics = std::move(placed_metrics);
+      }
+    } else {
+      s = evaluate("the initial guess", *job.input, &result->initial_guess_metrics);
+      if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+    }
+    result->start_placed_on_surface = start_placed;
+    const ToolPath& guess =
+        job.surface == nullptr ? *job.input : start_placed ? placed : spline_path;
+    if (guess_out != nullptr) *guess_out = guess;
+    std::vector<TolerancePoint> active;
+    SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
+    inputs.tolerance_points = &active;
+    HighAccuracyOptions options = settings.high_accuracy;
+    options.interpolation = settings.deviation.interpolation;
+    const bool held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
+    // One solve, then again with the points it left beyond the tolerance
+    // held, until none is (or refused).
+    // What the last tolerance round left beyond when the runs that reach
+    // it may go back as programmed instead of the path being refused.
+    std::string beyond_refusal;
+    std::vector<bool> beyond_runs;
+    const auto solve_held = [&](const HighAccuracyOptions& solve_options,
+                                bool may_put_back) -> Status {
+      for (int round = 0;; ++round) {
+        stage(round == 0 ? "high_accuracy solve"
+                         : "high_accuracy solve, " + std::to_string(active.size()) +
+                               " points held to the tolerance");
+        // The input passed its checks above, so whatever the solve reports
+        // is the solver's failure, not the input's.
+        s = SmoothBothWaysRoundPoles(inputs, solve_options, &result->output,
+                                     &result->high_accuracy);
+        if (!s.ok()) {
+          return Fail(SmoothingFailure::kSolver, "the high_accuracy solve failed: " + s.message(),
+                      failure);
+        }
+        if (!result->high_accuracy.converged) {
+          return Fail(SmoothingFailure::kSolver,
+                      "the high_accuracy solve failed: Ceres found no usable solution (" +
+                          result->high_accuracy.message + ")",
+                      failure);
+        }
+        s = finish_output();
+        if (!s.ok()) return s;
+        result->solve_tolerance_mm = solve_options.tolerance_mm;
+        result->tolerance_rounds = round;
+        result->tolerance_points = static_cast<int>(active.size());
+        if (held_to_tolerance) {
+          const DeviationReport& in = *result->input_metrics.deviation;
+          const DeviationReport& out = *result->output_at_input_feed.deviation;
+          const std::vector<size_t> beyond = BeyondTolerance(in, out, solve_options.tolerance_mm);
+          if (!beyond.empty() && round == kToleranceRounds) {
+            double heaviest = 0.0;
+            for (const TolerancePoint& p : active) heaviest = std::max(heaviest, p.weight);
+            std::ostringstream why;
+            why << BeyondToleranceMessage(in, out, beyond, solve_options.tolerance_mm)
+                << ", after " << round << " rounds holding " << active.size()
+                << " points to the tolerance with penalties up to " << heaviest
+                << " times the surface's weight";
+            if (!may_put_back) return Fail(SmoothingFailure::kSolver, why.str(), failure);
+            beyond_refusal = why.str();
+            beyond_runs = RunsReaching(*job.surface, *job.input, out, beyond);
+            return Status::Ok();
+          }
+          if (!beyond.empty()) {
+            GrowActiveSet(out, beyond, &active);
+            continue;
+          }
+        }
+        return Status::Ok();
+      }
+    };
+    // Where the input was within the tolerance and a few grid points of the
+    // solve's best stay beyond it, the runs that reach them go back as
+    // programmed (below, with their neighbours if the mix still breaks it),
+    // so the promise holds; only what that cannot mend is refused.
+    s = solve_held(options, /*may_put_back=*/true);
+    if (!s.ok()) return s;
+    // A run the solve made worse on peak d2 than the input's would go back
+    // as programmed below, and with it the input's deviation (up to 49 x the
+    // clean DPO path's on the random cases, issue 16). First the solve is
+    // repeated from its own result with the smoothness weights raised
+    // kStifferFactor-fold, at most kStifferSolves times, each held to the
+    // tolerance again; a stiffer solve that is refused leaves the last
+    // result, and the put-back then has the final word.
+    constexpr int kStifferSolves = 2;
+    constexpr double kStifferFactor = 10.0;
+    ToolPath stiffer_start;
+    for (int k = 0; k < kStifferSolves && settings.keep_runs_no_worse && job.surface != nullptr &&
+                    settings.resample_step_mm <= 0 && beyond_runs.empty();
+         ++k) {
+      std::vector<bool> worse_runs;
+      ToolPath composed = result->output;
+      if (!KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
+                           NoWorseOn(), &composed, &worse_runs) ||
+          std::none_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; })) {
+        break;
+      }
+      const SmoothingResult kept = *result;
+      const std::vector<TolerancePoint> kept_active = active;
+      stiffer_start = result->output;
+      inputs.initial_guess = &stiffer_start;
+      HighAccuracyOptions stiffer = options;
+      stiffer.w_second *= kStifferFactor;
+      stiffer.w_third *= kStifferFactor;
+      stiffer.w_tip_second *= kStifferFactor;
+      stage("high_accuracy solve with stiffer smoothing (" + std::to_string(k + 1) + ")");
+      if (!solve_held(stiffer, /*may_put_back=*/false).ok()) {
+        *result = kept;
+        active = kept_active;
+        *failure = SmoothingFailure::kNone;
+        break;
+      }
+      options = stiffer;
+      ++result->stiffer_solves;
+    }
+    // The path to be returned. Held to the tolerance it leaves no grid
+    // point beyond both the tolerance and the input, a pointwise promise
+    // that the start, itself beyond the tolerance where a noisy input
+    // happened to be within it, need not keep: judged against the start's
+    // max |dev| alone, a solve that met it was refused. So there it is worse
+    // only when it breaks more axis limits than the start and the input and
+    // is not nearer the surface than the start.
+    const auto worse_than_start = [&]() {
+      const PathMetrics& out_metrics = result->output_at_input_feed;
+      const PathMetrics& start_metrics = result->initial_guess_metrics;
+      return IsWorseThan(out_metrics, start_metrics) &&
+             (!held_to_tolerance ||
+              out_metrics.motion.limit_violations >
+                  std::max(start_metrics.motion.limit_violations,
+                           result->input_metrics.motion.limit_violations));
+    };
+    // A worse result is not refused for limits the input kept: the runs
+    // that break more limits than the input's go back as programmed, with
+    // the d2 rule below (at worst the whole input, which is never worse
+    // than itself); only what is still worse then is refused.
+    NoWorseOn no_worse;
+    no_worse.d2 = settings.keep_runs_no_worse;
+    no_worse.limits = worse_than_start();
+    if (no_worse.d2 || no_worse.limits || !beyond_runs.empty()) {
+      s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min, no_worse,
+                                held_to_tolerance ? options.tolerance_mm : 0.0, evaluate,
+                                beyond_runs, result);
+    }
+    if (!s.ok()) {
+      return Fail(SmoothingFailure::kSolver,
+                  "the smoothed path with runs kept as programmed does not fit the machine (" +
+                      s.message() + ")",
+                  failure);
+    }
+    if (!beyond_refusal.empty() &&
+        !BeyondTolerance(*result->input_metrics.deviation,
+                         *result->output_at_input_feed.deviation, options.tolerance_mm,
+                         kSameMovesSlackMm)
+             .empty()) {
+      return Fail(SmoothingFailure::kSolver, beyond_refusal, failure);
+    }
+    if (worse_than_start()) {
+      const PathMetrics& out_metrics = result->output_at_input_feed;
+      std::ostringstream why;
+      why << (held_to_tolerance
+                  ? "the optimised path breaks more axis limits than its starting point "
+                    "and the input, and is no nearer the surface than its start (try "
+                    "other weights)"
+                  : "the optimised path is worse than its starting point on deviation "
+                    "and limits (try other weights)")
+          << ": " << out_metrics.motion.limit_violations << " limit violations against "
+          << result->initial_guess_metrics.motion.limit_violations << " (start) and "
+          << result->input_metrics.motion.limit_violations << " (input), worst at pose "
+          << out_metrics.motion.worst_violation_pose;
+      return Fail(SmoothingFailure::kSolver, why.str(), failure);
+    }
+  }
+  result->output_metrics = result->output_at_input_feed;
+  return Status::Ok();
+}
+
+// The cutter that cuts the move into `pose`: its tool's, where the program
+// sizes one, else `fallback` (as DeviationOptions::cutter_per_tool judges).
+const Cutter& CutterOf(const ToolPath& path, const ToolPose& pose, const Cutter& fallback) {
+  if (pose.tool >= 0 && path.tools[pose.tool].cutter) return *path.tools[pose.tool].cutter;
+  return fallback;
+}
+
+bool SameCutter(const Cutter& a, const Cutter& b) {
+  return a.radius_mm == b.radius_mm && a.flute_length_mm == b.flute_length_mm &&
+         a.taper_rad == b.taper_rad;
+}
+
+// Each move cut by its own tool's cutter (settings.deviation.cutter_per_tool):
+// the path is cut into pieces of one cutter each, at the tool changes,
+// which are moves kept as programmed (runs never cross them). Each piece is
+// smoothed with its cutter as a path of its own, which ends with the
+// first pose of the next piece so that its last cutting pose stays where a
+// whole-path smoothing keeps it (the pose before a kept move); the pieces'
+// outputs are joined and the whole judged with each move's own cutter.
+Status SmoothToolByTool(const SmoothingJob& job, const SmoothingSettings& settings,
+                        SmoothingResult* result, SmoothingFailure* failure) {
+  const ToolPath& input = *job.input;
+  std::vector<size_t> first = {0};
+  for (size_t i = 1; i < input.poses.size(); ++i) {
+    if (SameCutter(CutterOf(input, input.poses[i], *job.cutter),
+                   CutterOf(input, input.poses[i - 1], *job.cutter))) {
+      continue;
+    }
+    if (!IsPositioningMove(input.poses[i])) {
+      return Fail(SmoothingFailure::kBadInput,
+                  "pose " + std::to_string(i) + " (line " +
+                      std::to_string(input.poses[i].source_line) +
+                      ") changes the cutter inside a cutting run",
+                  failure);
+    }
+    first.push_back(i);
+  }
+  if (first.size() == 1) return SmoothWithOneCutter(job, settings, result, failure, nullptr);
+  first.push_back(input.poses.size());
+
+  const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
+  DeviationOptions deviation = settings.deviation;
+  const Evaluator evaluate = JudgeOf(job, settings, &deviation);
+  Status s = evaluate("the input", input, &result->input_metrics);
+  if (s.ok() && settings.judge_on_input_range && std::isnan(deviation.u_min)) {
+    CoveredRangeU(*job.surface, input, &deviation.u_min, &deviation.u_max);
+  }
+  if (s.ok()) s = WithinTravel(*job.machine, input);
+  if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+
+  ToolPath output = WithoutPoses(input), guesses = WithoutPoses(input);
+  HighAccuracyReport& ha = result->high_accuracy;
+  ha.converged = true;
+  for (size_t k = 0; k + 1 < first.size(); ++k) {
+    const bool last = k + 2 == first.size();
+    ToolPath piece = WithoutPoses(input);
+    piece.poses.assign(input.poses.begin() + first[k],
+                       input.poses.begin() + first[k + 1] + (last ? 0 : 1));
+    const Cutter& cutter = CutterOf(input, input.poses[first[k]], *job.cutter);
+    piece.cutter = cutter;
+    SmoothingSettings one = settings;
+    one.schedule_feed = false;
+    one.deviation.cutter_per_tool = false;
+    auto on_stage = settings.on_stage;
+    if (on_stage) {
+      one.on_stage = [&, k](const std::string& name) {
+        on_stage("tool piece " + std::to_string(k + 1) + " of " +
+                 std::to_string(first.size() - 1) + ": " + name);
+      };
+    }
+    SmoothingResult part;
+    ToolPath guess;
+    const bool feeds = std::any_of(piece.poses.begin() + 1, piece.poses.end(),
+                                   [](const ToolPose& p) { return !p.rapid; });
+    if (feeds) {
+      s = SmoothWithOneCutter({&piece, job.surface, &cutter, job.machine}, one, &part, failure,
+                              &guess);
+      if (!s.ok()) {
+        std::ostringstream what;
+        what << "the moves cut with the cutter of D " << 2 * cutter.radius_mm << " mm (from line "
+             << input.poses[first[k]].source_line << "): " << s.message();
+        return Status::Error(what.str());
+      }
+    } else {
+      part.output = guess = piece;
+    }
+    if (!last) {
+      // The next piece's first pose, kept as programmed: it starts that
+      // piece's output.
+      if (part.output.poses.empty() || !IsPositioningMove(part.output.poses.back())) {
+        return Fail(SmoothingFailure::kSolver,
+                    "the smoothed stretch of a tool does not end at the next tool's first pose",
+                    failure);
+      }
+      part.output.poses.pop_back();
+      guess.poses.pop_back();
+    }
+    output.poses.insert(output.poses.end(), part.output.poses.begin(), part.output.poses.end());
+    guesses.poses.insert(guesses.poses.end(), guess.poses.begin(), guess.poses.end());
+    result->runs_kept_as_input += part.runs_kept_as_input;
+    result->tolerance_rounds = std::max(result->tolerance_rounds, part.tolerance_rounds);
+    result->tolerance_points += part.tolerance_points;
+    result->solve_tolerance_mm = std::max(result->solve_tolerance_mm, part.solve_tolerance_mm);
+    result->start_placed_on_surface |= part.start_placed_on_surface;
+    SplineSmootherReport& sp = result->spline;
+    sp.zones += part.spline.zones;
+    sp.poses_in_zones += part.spline.poses_in_zones;
+    sp.poses_inserted += part.spline.poses_inserted;
+    sp.max_angle_change_deg = std::max(sp.max_angle_change_deg, part.spline.max_angle_change_deg);
+    sp.pole_crossings += part.spline.pole_crossings;
+    if (!feeds) continue;
+    const HighAccuracyReport& h = part.high_accuracy;
+    ha.converged = ha.converged && (h.converged || !high_accuracy);
+    if (!h.message.empty()) ha.message = h.message;
+    ha.iterations += h.iterations;
+    ha.solve_time_s += h.solve_time_s;
+    ha.initial_cost += h.initial_cost;
+    ha.final_cost += h.final_cost;
+    for (const auto& [family, cost] : h.final_cost_by_family) ha.final_cost_by_family[family] += cost;
+    ha.poses_clamped += h.poses_clamped;
+    ha.pole_passages += h.pole_passages;
+    ha.pole_passages_rerouted += h.pole_passages_rerouted;
+    ha.pole_passages_in_windows += h.pole_passages_in_windows;
+  }
+  result->output = std::move(output);
+  s = evaluate("the output", result->output, &result->output_at_input_feed);
+  if (s.ok()) s = WithinTravel(*job.machine, result->output);
+  if (!s.ok()) {
+    return Fail(SmoothingFailure::kSolver,
+                "the smoothed path does not fit the machine (" + s.message() + ")", failure);
+  }
+  if (high_accuracy) {
+    s = evaluate("the starting path", guesses, &result->initial_guess_metrics);
+    if (!s.ok()) return Fail(SmoothingFailure::kSolver, "start: " + s.message(), failure);
+  }
+  result->output_metrics = result->output_at_input_feed;
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
+                    SmoothingResult* result, SmoothingFailure* failure) {
+  CHECK(job.input && job.cutter && job.machine && result && failure);
+  *failure = SmoothingFailure::kNone;
+  Status s = settings.deviation.cutter_per_tool && job.surface != nullptr
+                 ? SmoothToolByTool(job, settings, result, failure)
+                 : SmoothWithOneCutter(job, settings, result, failure, nullptr);
+  if (!s.ok() || !settings.schedule_feed) return s;
+  auto stage = [&](const std::string& name) {
+    if (settings.on_stage) settings.on_stage(name);
+  };
+  DeviationOptions deviation = settings.deviation;
+  if (job.surface != nullptr && settings.judge_on_input_range && std::isnan(deviation.u_min)) {
+    CoveredRangeU(*job.surface, *job.input, &deviation.u_min, &deviation.u_max);
+  }
+  const Evaluator evaluate = JudgeOf(job, settings, &deviation);
+  std::vector<JointVector> joints;
+  stage("scheduling the feed");
+  s = job.machine->AssignJoints(result->output, &joints);
+  FeedScheduleOptions feed = settings.feed;
+  for (int a = 0; a < 5; ++a) {  // what raised feeds may ask of each axis at most
+    feed.input_peak_acceleration[a] = result->input_metrics.motion.axes[a].peak_acceleration;
+    feed.input_peak_jerk[a] = result->input_metrics.motion.axes[a].peak_jerk;
+  }
+  if (s.ok()) s = ScheduleFeed(*job.machine, joints, feed, &result->output, &result->feed);
+  if (s.ok()) s = evaluate("the output as written", result->output, &result->output_metrics);
+  if (!s.ok()) return Fail(SmoothingFailure::kSolver, "feed scheduling: " + s.message(), failure);
+  return Status::Ok();
+}
+
+}  // namespace tpopt
