@@ -277,15 +277,15 @@ Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per
   }
 }
 
-// One flag per cutting run of `input` (RunStarts): whether the moves the
-// run's poses end or start span, by their contact rulings (the poses' feet
+// One flag per cutting run of `input` (RunStarts): whether the cut moves
+// that the run's poses move span, by their contact rulings (the poses' feet
 // on rail 0), the u of one of the grid points `beyond` of `report`, give or
 // take one grid step (the cutter reaches a little past its contact ruling).
-// Those moves run from the run's first pose to the next run's first pose:
-// a run's first pose is a positioning target, kept as programmed, so the
-// move into it changes only with the pose before it, the last of the run
-// before (a held pose ending a cut, as before a tool change, is a run of
-// its own whose move is changed only by the run before it).
+// Those moves run from the run's first pose to the next run's first pose
+// unless a rapid goes there (it cuts nothing): a run's first pose is a
+// positioning target, kept as programmed, so the move into it changes only
+// with the pose before it, the last of the run before (a pose held before a
+// tool change is a run of one whose move only the run before changes).
 std::vector<bool> RunsReaching(const RuledSurface& surface, const ToolPath& input,
                                const DeviationReport& report, const std::vector<size_t>& beyond) {
   const std::vector<size_t> first = RunStarts(input);
@@ -294,7 +294,8 @@ std::vector<bool> RunsReaching(const RuledSurface& surface, const ToolPath& inpu
   const double step = report.u.size() > 1 ? std::abs(report.u[1] - report.u[0]) : 0.0;
   std::vector<bool> reach(first.size() - 1, false);
   for (size_t r = 0; r + 1 < first.size(); ++r) {
-    const size_t end = std::min(first[r + 1] + 1, u.size());
+    size_t end = first[r + 1];
+    if (end < u.size() && !input.poses[end].rapid) ++end;  // the move out of its last pose
     const auto [lo, hi] = std::minmax_element(u.begin() + first[r], u.begin() + end);
     for (size_t k : beyond) {
       const double uk = report.u[k / nv];
