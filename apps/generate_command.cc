@@ -21,9 +21,9 @@ int RunGenerate(const Invocation&) {
   } else if (FLAGS_strategy == "dpo") {
     options.strategy = FlankStrategy::kDoublePointOffset;
   } else if (s.ok()) {
-    s = Status::Error("--strategy=" + FLAGS_strategy + " must be spo or dpo");
+    s = Status::Usage("--strategy=" + FLAGS_strategy + " must be spo or dpo");
   }
-  if (s.ok() && FLAGS_cutter_radius == 0.0) s = Status::Error("--cutter_radius is required");
+  if (s.ok() && FLAGS_cutter_radius == 0.0) s = Status::Usage("--cutter_radius is required");
   options.cutter_radius_mm = FLAGS_cutter_radius;
   options.poses = FLAGS_poses;
   options.feed_mm_per_min = FLAGS_feed;
@@ -34,10 +34,10 @@ int RunGenerate(const Invocation&) {
   options.noise_seed = static_cast<unsigned>(FLAGS_noise_seed);
   options.flute_length_mm = FLAGS_flute_length;
   std::string why;
-  if (s.ok() && !options.IsValid(&why)) s = Status::Error(why);
+  if (s.ok() && !options.IsValid(&why)) s = Status::Usage(why);
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt generate: %s\n", s.message().c_str());
-    return kExitUsage;
+    return ExitCodeOf(s);
   }
   RuledSurface surface;
   Machine machine;

@@ -181,7 +181,7 @@ Status InterpolationFromFlags(const std::string& path, const std::string& gcode_
     return Status::Ok();
   }
   if (ParseInterpolation(FLAGS_interpolation, interpolation)) return Status::Ok();
-  return Status::Error("--interpolation=" + FLAGS_interpolation + " must be tcp or joint");
+  return Status::Usage("--interpolation=" + FLAGS_interpolation + " must be tcp or joint");
 }
 
 Status PartSetupFromFlag(PartSetup* setup) {
@@ -192,7 +192,8 @@ Status PartSetupFromFlag(PartSetup* setup) {
 
 Status CheckPartSetupFlag() {
   PartSetup setup;
-  return PartSetupFromFlag(&setup);
+  const Status s = PartSetupFromFlag(&setup);
+  return s.ok() ? s : Status::Usage(s.message());
 }
 
 Status LoadMachine(const std::string& path, Machine* machine) {
@@ -301,7 +302,7 @@ Status CheckGcodeFlags() {
        {std::pair<const char*, std::string>{"gcode_style", FLAGS_gcode_style},
         {"gcode_in_style", FLAGS_gcode_in_style}}) {
     if (value != "tcp" && value != "joint") {
-      return Status::Error(std::string("--") + name + "=" + value + " must be tcp or joint");
+      return Status::Usage(std::string("--") + name + "=" + value + " must be tcp or joint");
     }
   }
   return Status::Ok();
@@ -322,7 +323,7 @@ Status CheckOutputFolders(const std::vector<std::string>& paths) {
 
 Status Require(const std::string& value, const std::string& flag) {
   if (!value.empty()) return Status::Ok();
-  return Status::Error("--" + flag + " is required");
+  return Status::Usage("--" + flag + " is required");
 }
 
 }  // namespace tpopt

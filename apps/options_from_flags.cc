@@ -15,14 +15,14 @@ Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion
   }
   motion->default_feed_mm_per_min = FLAGS_feed;
   std::string why;
-  if (!deviation->IsValid(&why) || !motion->IsValid(&why)) return Status::Error(why);
+  if (!deviation->IsValid(&why) || !motion->IsValid(&why)) return Status::Usage(why);
   return Status::Ok();
 }
 
 Status LinkMoveOptionsFromFlags(LinkMoveOptions* links) {
   links->feed_ratio = FLAGS_link_feed_ratio;
   std::string why;
-  if (!links->IsValid(&why)) return Status::Error(why);
+  if (!links->IsValid(&why)) return Status::Usage(why);
   return Status::Ok();
 }
 
@@ -74,14 +74,14 @@ Status SmootherOptionsFromFlags(bool surface_free, SplineSmootherOptions* spline
     ha->w_tip_second = UnlessDefault("w_tip_second", FLAGS_w_tip_second, defaults.w_tip_second);
   }
   std::string why;
-  if (!spline->IsValid(&why)) return Status::Error(why);
-  if (!ha->IsValid(&why)) return Status::Error(why);
+  if (!spline->IsValid(&why)) return Status::Usage(why);
+  if (!ha->IsValid(&why)) return Status::Usage(why);
   return Status::Ok();
 }
 
 Status CurveOutputOptionsFromFlags(bool* bspline, CurveOutputOptions* options) {
   if (FLAGS_output_curve != "points" && FLAGS_output_curve != "bspline") {
-    return Status::Error("--output_curve=" + FLAGS_output_curve + " must be points or bspline");
+    return Status::Usage("--output_curve=" + FLAGS_output_curve + " must be points or bspline");
   }
   *bspline = FLAGS_output_curve == "bspline";
   const std::string& p = FLAGS_fit_parametrization;
@@ -94,11 +94,11 @@ Status CurveOutputOptionsFromFlags(bool* bspline, CurveOutputOptions* options) {
   } else if (p == "uniform") {
     options->fit.parametrization = Parametrization::kUniform;
   } else {
-    return Status::Error("--fit_parametrization=" + p +
+    return Status::Usage("--fit_parametrization=" + p +
                          " must be approximate_arc, chord, centripetal or uniform");
   }
   if (FLAGS_fit_chord_height != "fixed" && FLAGS_fit_chord_height != "neighbours") {
-    return Status::Error("--fit_chord_height=" + FLAGS_fit_chord_height +
+    return Status::Usage("--fit_chord_height=" + FLAGS_fit_chord_height +
                          " must be fixed or neighbours");
   }
   options->fit.chord_height =
@@ -106,7 +106,7 @@ Status CurveOutputOptionsFromFlags(bool* bspline, CurveOutputOptions* options) {
   options->fit.chord_height_mm = FLAGS_fit_chord_height_mm;
   options->sample_step_mm = FLAGS_curve_step_mm;
   std::string why;
-  if (!options->IsValid(&why)) return Status::Error(why);
+  if (!options->IsValid(&why)) return Status::Usage(why);
   return Status::Ok();
 }
 

@@ -17,9 +17,10 @@
 namespace tpopt {
 namespace {
 
-int Fail(int code, const std::string& message) {
+// Prints `message` and returns the exit code of `status` (apps/exit_codes.h).
+int Fail(const Status& status, const std::string& message) {
   std::fprintf(stderr, "tpopt smooth: %s\n", message.c_str());
-  return code;
+  return ExitCodeOf(status);
 }
 
 // Shows the pipeline's stages and Ceres' iterations on `progress`; null
@@ -123,7 +124,7 @@ int RunSmooth(const Invocation& invocation) {
   if (s.ok()) s = CheckPartSetupFlag();
   if (s.ok()) s = CheckPictureFlags();
   if (s.ok() && FLAGS_mode != "spline" && FLAGS_mode != "high_accuracy" && FLAGS_mode != "none") {
-    s = Status::Error("--mode=" + FLAGS_mode + " must be spline, high_accuracy or none");
+    s = Status::Usage("--mode=" + FLAGS_mode + " must be spline, high_accuracy or none");
   }
   SmoothingSettings settings;
   settings.mode = FLAGS_mode == "spline" ? SmoothingMode::kSpline : SmoothingMode::kHighAccuracy;
@@ -135,7 +136,7 @@ int RunSmooth(const Invocation& invocation) {
   settings.feed.default_feed_mm_per_min = FLAGS_feed;
   if (s.ok() && FLAGS_feed_mode != "lower" && FLAGS_feed_mode != "raise" &&
       FLAGS_feed_mode != "keep_run_time") {
-    s = Status::Error("--feed_mode=" + FLAGS_feed_mode + " must be lower, raise or keep_run_time");
+    s = Status::Usage("--feed_mode=" + FLAGS_feed_mode + " must be lower, raise or keep_run_time");
   }
   settings.feed.mode = FLAGS_feed_mode == "raise"           ? FeedMode::kRaise
                        : FLAGS_feed_mode == "keep_run_time" ? FeedMode::kKeepRunTime
@@ -149,7 +150,7 @@ int RunSmooth(const Invocation& invocation) {
   settings.feed.max_feed_step = FLAGS_max_feed_step;
   std::string feed_why;
   if (s.ok() && !settings.feed.IsValid(&feed_why)) {
-    s = Status::Error(feed_why);
+    s = Status::Usage(feed_why);
   }
   if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
   if (s.ok()) {
@@ -160,20 +161,19 @@ int RunSmooth(const Invocation& invocation) {
   if (s.ok()) s = SmootherOptionsFromFlags(FLAGS_surface.empty(), &settings.spline,
                                               &settings.high_accuracy);
   if (s.ok() && !(FLAGS_resample_step_mm >= 0)) {
-    s = Status::Error("--resample_step_mm=" + std::to_string(FLAGS_resample_step_mm) +
+    s = Status::Usage("--resample_step_mm=" + std::to_string(FLAGS_resample_step_mm) +
                       " must be >= 0");
   }
   bool bspline_output = false;
   CurveOutputOptions curve_options;
   if (s.ok()) s = CurveOutputOptionsFromFlags(&bspline_output, &curve_options);
-  if (!s.ok()) return Fail(kExitUsage, s.message());
+  if (!s.ok()) return Fail(s, s.message());
 
   s = CheckOutputFolders({FLAGS_out, FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
   if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job);
-  if (!s.ok()) return Fail(kExitBadInput, s.message());
+  if (!s.ok()) return Fail(s, s.message());
   SmoothingResult result;
-  SmoothingFailure failure = SmoothingFailure::kNone;
   if (FLAGS_mode == "none") {
     s = PassThrough(job, settings, &result);
   } else {
@@ -181,24 +181,22 @@ int RunSmooth(const Invocation& invocation) {
     ProgressDisplay progress(stderr, "tpopt smooth", !FLAGS_quiet, FLAGS_progress_after_s);
     ReportProgressTo(&progress, &settings);
     s = RunSmoothing({&job.path, job.surface_or_null(), &job.cutter, &job.machine}, settings,
-                     &result, &failure);
+                     &result);
   }
   ReportProgressTo(nullptr, &settings);
   if (!s.ok()) {
-    if (failure == SmoothingFailure::kSolver) {
-      return Fail(kExitSolverFailure, s.message() + "; nothing written");
-    }
-    return Fail(kExitBadInput, FLAGS_in + ": " + s.message());
+    return Fail(s, s.code() == StatusCode::kSolver ? s.message() + "; nothing written"
+                                                   : FLAGS_in + ": " + s.message());
   }
   result.output.title = "tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in;
   ToolPath written = result.output;
   std::vector<AptCurveSpan> spans;
   if (bspline_output) {
     s = FitToolPathCurves(result.output, curve_options, &written, &spans);
-    if (!s.ok()) return Fail(kExitBadInput, FLAGS_out + ": the B-spline fit failed: " + s.message());
+    if (!s.ok()) return Fail(s, FLAGS_out + ": the B-spline fit failed: " + s.message());
   }
   s = WriteOutputs(invocation, job, result, settings.deviation.interpolation, written, spans);
-  if (!s.ok()) return Fail(kExitBadInput, s.message());
+  if (!s.ok()) return Fail(s, s.message());
   if (!FLAGS_quiet) {
     PrintSummary(settings, result);
     if (bspline_output) {

@@ -27,16 +27,16 @@ namespace {
 Status ParseTorusFlag(const std::string& text, TorusCutter* cutter) {
   const std::string prefix = "torus:";
   const std::string usage = "--cutter=" + text + " must be torus:R,r (mm), e.g. torus:8,2";
-  if (text.compare(0, prefix.size(), prefix) != 0) return Status::Error(usage);
+  if (text.compare(0, prefix.size(), prefix) != 0) return Status::Usage(usage);
   const char* begin = text.c_str() + prefix.size();
   char* end = nullptr;
   cutter->radius_mm = std::strtod(begin, &end);
-  if (end == begin || *end != ',') return Status::Error(usage);
+  if (end == begin || *end != ',') return Status::Usage(usage);
   const char* second = end + 1;
   cutter->corner_radius_mm = std::strtod(second, &end);
-  if (end == second || *end != '\0') return Status::Error(usage);
+  if (end == second || *end != '\0') return Status::Usage(usage);
   std::string why;
-  if (!cutter->IsValid(&why)) return Status::Error("--cutter: " + why);
+  if (!cutter->IsValid(&why)) return Status::Usage("--cutter: " + why);
   return Status::Ok();
 }
 
@@ -48,7 +48,7 @@ Status MethodFromFlag(const std::string& name, PostureMethod* method) {
   } else if (name == "mpec") {
     *method = PostureMethod::kMidPointErrorControl;
   } else {
-    return Status::Error("--method=" + name + " must be sturz, mpm or mpec");
+    return Status::Usage("--method=" + name + " must be sturz, mpm or mpec");
   }
   return Status::Ok();
 }
@@ -71,8 +71,8 @@ Status OptionsFromFlags(TorusCutter* cutter, StripPathOptions* options) {
   options->path_v = FLAGS_path_v;
   options->samples_per_side = FLAGS_section_samples;
   std::string why;
-  if (!options->IsValid(&why)) return Status::Error(why);
-  if (!(FLAGS_feed > 0.0)) return Status::Error("--feed must be > 0");
+  if (!options->IsValid(&why)) return Status::Usage(why);
+  if (!(FLAGS_feed > 0.0)) return Status::Usage("--feed must be > 0");
   return Status::Ok();
 }
 
@@ -118,7 +118,7 @@ int RunStripWidth(const Invocation& invocation) {
   if (s.ok()) s = MetricOptionsFromFlags(&deviation_options, &motion_options);
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt stripwidth: %s\n", s.message().c_str());
-    return kExitUsage;
+    return ExitCodeOf(s);
   }
   FreeformSurface surface;
   Machine machine;
@@ -164,7 +164,7 @@ int RunStripWidth(const Invocation& invocation) {
   }
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt stripwidth: %s\n", s.message().c_str());
-    return kExitBadInput;
+    return ExitCodeOf(s);
   }
   if (!FLAGS_quiet) {
     const auto& a = motion.motion.axes[kA];

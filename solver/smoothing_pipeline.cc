@@ -241,17 +241,11 @@ Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per
   }
 }
 
-Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure* failure) {
-  *failure = kind;
-  return Status::Error(message);
-}
-
 }  // namespace
 
 Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
-                    SmoothingResult* result, SmoothingFailure* failure) {
-  CHECK(job.input && job.cutter && job.machine && result && failure);
-  *failure = SmoothingFailure::kNone;
+                    SmoothingResult* result) {
+  CHECK(job.input && job.cutter && job.machine && result);
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
   const auto& poses = job.input->poses;
   const auto second = poses.begin() + std::min<size_t>(1, poses.size());
@@ -259,10 +253,8 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   const bool cuts =
       std::any_of(second, poses.end(), [](const ToolPose& p) { return !IsPositioningMove(p); });
   if (!feeds) {
-    return Fail(SmoothingFailure::kBadInput,
-                "the path has no cutting move to smooth (" + std::to_string(poses.size()) +
-                    " poses)",
-                failure);
+    return Status::Error("the path has no cutting move to smooth (" + std::to_string(poses.size()) +
+                         " poses)");
   }
   auto stage = [&](const std::string& name) {
     if (settings.on_stage) settings.on_stage(name);
@@ -284,7 +276,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     CoveredRangeU(*job.surface, *job.input, &deviation.u_min, &deviation.u_max);
   }
   if (s.ok()) s = WithinTravel(*job.machine, *job.input);
-  if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+  if (!s.ok()) return Status::Error(s.message());
   if (!cuts) {
     // Every feed move is one to keep as programmed (held, such as a
     // program of pure rotary moves, or a link): the program goes out as it
@@ -302,7 +294,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                         &spline_path, &result->spline);
   // The input was read and fits the machine: a method that fails on it fails
   // as a solver.
-  if (!s.ok()) return Fail(SmoothingFailure::kSolver, "spline smoothing: " + s.message(), failure);
+  if (!s.ok()) return Status::SolverFailure("spline smoothing: " + s.message());
 
   // Resamples result->output if asked, evaluates it and holds it to the
   // machine's travel.
@@ -312,13 +304,13 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
       ResampleOptions resample;
       resample.step_mm = settings.resample_step_mm;
       Status r = ResamplePath(result->output, *job.machine, resample, &result->output);
-      if (!r.ok()) return Fail(SmoothingFailure::kBadInput, "resampling: " + r.message(), failure);
+      if (!r.ok()) return Status::Error("resampling: " + r.message());
     }
     Status r = evaluate("the output", result->output, &result->output_at_input_feed);
     if (r.ok()) r = WithinTravel(*job.machine, result->output);
     if (!r.ok()) {
-      return Fail(SmoothingFailure::kSolver,
-                  "the smoothed path does not fit the machine (" + r.message() + ")", failure);
+      return Status::SolverFailure("the smoothed path does not fit the machine (" + r.message() +
+                                   ")");
     }
     return Status::Ok();
   };
@@ -344,19 +336,19 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     bool start_placed = false;
     if (job.surface != nullptr) {
       s = evaluate("the spline start", spline_path, &result->initial_guess_metrics);
-      if (!s.ok()) return Fail(SmoothingFailure::kSolver, "spline start: " + s.message(), failure);
+      if (!s.ok()) return Status::SolverFailure("spline start: " + s.message());
       stage("placing the poses on the surface");
       PathMetrics placed_metrics;
       s = PlaceOnSurface(*job.input, *job.surface, *job.cutter, &placed);
       if (s.ok()) s = evaluate("the placed start", placed, &placed_metrics);
-      if (!s.ok()) return Fail(SmoothingFailure::kSolver, "placement: " + s.message(), failure);
+      if (!s.ok()) return Status::SolverFailure("placement: " + s.message());
       if (WorstDeviationMm(placed_metrics) < WorstDeviationMm(result->initial_guess_metrics)) {
         start_placed = true;
         result->initial_guess_metrics = std::move(placed_metrics);
       }
     } else {
       s = evaluate("the initial guess", *job.input, &result->initial_guess_metrics);
-      if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+      if (!s.ok()) return Status::Error(s.message());
     }
     result->start_placed_on_surface = start_placed;
     const ToolPath& guess =
@@ -375,14 +367,12 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
       // is the solver's failure, not the input's.
       s = SmoothBothWaysRoundPoles(inputs, options, &result->output, &result->high_accuracy);
       if (!s.ok()) {
-        return Fail(SmoothingFailure::kSolver, "the high_accuracy solve failed: " + s.message(),
-                    failure);
+        return Status::SolverFailure("the high_accuracy solve failed: " + s.message());
       }
       if (!result->high_accuracy.converged) {
-        return Fail(SmoothingFailure::kSolver,
-                    "the high_accuracy solve failed: Ceres found no usable solution (" +
-                        result->high_accuracy.message + ")",
-                    failure);
+        return Status::SolverFailure(
+            "the high_accuracy solve failed: Ceres found no usable solution (" +
+            result->high_accuracy.message + ")");
       }
       s = finish_output();
       if (!s.ok()) return s;
@@ -401,7 +391,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
               << round << " rounds holding " << active.size()
               << " points to the tolerance with penalties up to " << heaviest
               << " times the surface's weight";
-          return Fail(SmoothingFailure::kSolver, why.str(), failure);
+          return Status::SolverFailure(why.str());
         }
         if (!beyond.empty()) {
           GrowActiveSet(out, beyond, &active);
@@ -424,14 +414,12 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                std::max(start_metrics.motion.limit_violations,
                         result->input_metrics.motion.limit_violations));
       if (worse) {
-        return Fail(SmoothingFailure::kSolver,
-                    held_to_tolerance
-                        ? "the optimised path breaks more axis limits than its starting point "
-                          "and the input, and is no nearer the surface than its start (try "
-                          "other weights)"
-                        : "the optimised path is worse than its starting point on deviation "
-                          "and limits (try other weights)",
-                    failure);
+        return Status::SolverFailure(
+            held_to_tolerance
+                ? "the optimised path breaks more axis limits than its starting point and the "
+                  "input, and is no nearer the surface than its start (try other weights)"
+                : "the optimised path is worse than its starting point on deviation and limits "
+                  "(try other weights)");
       }
       break;
     }
@@ -440,10 +428,9 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                                 held_to_tolerance ? options.tolerance_mm : 0.0, evaluate, result);
     }
     if (!s.ok()) {
-      return Fail(SmoothingFailure::kSolver,
-                  "the smoothed path with runs kept as programmed does not fit the machine (" +
-                      s.message() + ")",
-                  failure);
+      return Status::SolverFailure(
+          "the smoothed path with runs kept as programmed does not fit the machine (" +
+          s.message() + ")");
     }
   }
   result->output_metrics = result->output_at_input_feed;
@@ -458,7 +445,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   }
   if (s.ok()) s = ScheduleFeed(*job.machine, joints, feed, &result->output, &result->feed);
   if (s.ok()) s = evaluate("the output as written", result->output, &result->output_metrics);
-  if (!s.ok()) return Fail(SmoothingFailure::kSolver, "feed scheduling: " + s.message(), failure);
+  if (!s.ok()) return Status::SolverFailure("feed scheduling: " + s.message());
   return Status::Ok();
 }
 

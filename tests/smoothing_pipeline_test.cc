@@ -31,9 +31,7 @@ TEST(SmoothingPipelineTest, OutputIsJudgedOnTheInputsRange) {
   settings.deviation.samples_u = 30;
   settings.deviation.samples_v = 5;
   SmoothingResult result;
-  SmoothingFailure failure;
-  const Status s =
-      RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result, &failure);
+  const Status s = RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result);
   ASSERT_TRUE(s.ok()) << s.message();
   const DeviationReport& in = *result.input_metrics.deviation;
   EXPECT_NEAR(in.u.front(), 0.25, 1e-3);

@@ -677,6 +677,38 @@ TEST(TpoptCliTest, EvaluateReportsTheTravelSmoothRefuses) {
   EXPECT_EQ(j["limit_violations"], 2);  // X 250 and X 260
 }
 
+// The exit code follows from the status's code alone (apps/exit_codes.h):
+// a result the solver cannot make acceptable is exit 3, with nothing
+// written; an input the pipeline refuses before any solve is exit 1, naming
+// the file. The solver's case: the hypar's clean SPO path cannot be held
+// within 0.005 mm where it crosses the pole (safety_invariants_test,
+// ToleranceInvariantTest).
+TEST(TpoptCliTest, SmoothExitsThreeForASolverFailureAndOneForBadInput) {
+  TempDir dir;
+  const std::string cls = dir.File("spo.cls"), out = dir.File("out.cls");
+  const std::string hypar = SourcePath("data/surfaces/hypar.json");
+  const std::string machine = SourcePath("data/machines/jcde2022_ac.json");
+  auto r = RunCommand(Tpopt("generate --surface=" + hypar + " --cutter_radius=4 --out=" + cls));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = RunCommand(Tpopt("smooth --quiet --mode=high_accuracy --tolerance_mm=0.005 --in=" + cls +
+                       " --surface=" + hypar + " --machine=" + machine + " --out=" + out));
+  EXPECT_EQ(r.exit_code, 3) << r.output;
+  EXPECT_NE(r.output.find("beyond the tolerance of 0.005 mm"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("nothing written"), std::string::npos) << r.output;
+  EXPECT_FALSE(FileExists(out));
+
+  // Only rapids: read and within the travel, but nothing to smooth.
+  const std::string rapids = dir.File("rapids.ngc");
+  std::ofstream(rapids) << "G21 G90 G94\nG0 X0 Y0 Z5 A10 C0\nG0 X10\nG0 X20\nM2\n";
+  r = RunCommand(Tpopt("smooth --quiet --mode=spline --cutter_radius=3 --in=" + rapids +
+                       " --machine=" + kSim + " --out=" + dir.File("rapids_out.ngc")));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find(rapids + ": the path has no cutting move to smooth"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(FileExists(dir.File("rapids_out.ngc")));
+}
+
 TEST(TpoptCliPicturesTest, EvaluateWritesAnHtmlReportAndAVtpScene) {
   TempDir dir;
   const std::string cam = CamPath(dir, 60);
