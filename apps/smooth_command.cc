@@ -106,9 +106,8 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
 // --mode=none: the input as the output, evaluated once, so that a program
 // goes out through the same reader and writer as a smoothed one.
 Status PassThrough(const Job& job, const SmoothingSettings& settings, SmoothingResult* result) {
-  Status s = EvaluatePath(job.path, job.machine, job.surface_or_null(), job.cutter,
-                          settings.deviation, settings.motion, &result->input_metrics);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(EvaluatePath(job.path, job.machine, job.surface_or_null(), job.cutter,
+                               settings.deviation, settings.motion, &result->input_metrics));
   result->output = job.path;
   result->output_at_input_feed = result->input_metrics;
   result->output_metrics = result->input_metrics;

@@ -54,13 +54,12 @@ Status MethodFromFlag(const std::string& name, PostureMethod* method) {
 }
 
 Status OptionsFromFlags(TorusCutter* cutter, StripPathOptions* options) {
-  Status s = Require(FLAGS_surface, "surface");
-  if (s.ok()) s = Require(FLAGS_out, "out");
-  if (s.ok()) s = Require(FLAGS_cutter, "cutter");
-  if (s.ok()) s = CheckGcodeFlags();
-  if (s.ok()) s = ParseTorusFlag(FLAGS_cutter, cutter);
-  if (s.ok()) s = MethodFromFlag(FLAGS_method, &options->method);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(Require(FLAGS_surface, "surface"));
+  RETURN_IF_ERROR(Require(FLAGS_out, "out"));
+  RETURN_IF_ERROR(Require(FLAGS_cutter, "cutter"));
+  RETURN_IF_ERROR(CheckGcodeFlags());
+  RETURN_IF_ERROR(ParseTorusFlag(FLAGS_cutter, cutter));
+  RETURN_IF_ERROR(MethodFromFlag(FLAGS_method, &options->method));
   PostureOptions& posture = options->posture;
   posture.tolerance_mm = FLAGS_tolerance_mm;
   posture.sturz_lead_rad = FLAGS_lead_deg * kDegToRad;

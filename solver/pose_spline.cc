@@ -9,8 +9,7 @@ Status PoseSpline::Fit(const ToolPath& path, const std::vector<JointVector>& joi
     std::vector<double> y;
     y.reserve(indices.size());
     for (size_t i : indices) y.push_back(k < 3 ? path.poses[i].p_w_tip[k] : joints[i][k]);
-    Status st = SmoothingSpline::Fit(s, y, {}, 0.0, &out->fit_[k]);
-    if (!st.ok()) return st;
+    RETURN_IF_ERROR(SmoothingSpline::Fit(s, y, {}, 0.0, &out->fit_[k]));
   }
   return Status::Ok();
 }

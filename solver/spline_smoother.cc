@@ -211,9 +211,8 @@ Status FindZonesOfRun(const SmoothingJob& job, size_t first, const std::vector<d
     return Status::Ok();
   }
   SmoothingSpline a_fit, c_fit;
-  const Status st = SmoothingSpline::FitEachWithinTolerance(
-      s, {&a, &c}, {}, job.options.angle_tolerance_deg / kRadToDeg, {&a_fit, &c_fit});
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(SmoothingSpline::FitEachWithinTolerance(
+      s, {&a, &c}, {}, job.options.angle_tolerance_deg / kRadToDeg, {&a_fit, &c_fit}));
   *zone = FindZones(job, first, s, a_fit.values(), c_fit.values(), report);
   return Status::Ok();
 }
@@ -224,8 +223,7 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
                  SplineSmootherReport* report) {
   const SplineSmootherOptions& options = job.options;
   std::vector<double> a, c;
-  Status st = job.machine.AssignRotaryAngles(job.in, first, end, &a, &c);
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(job.machine.AssignRotaryAngles(job.in, first, end, &a, &c));
   const ToolPose* const poses = job.in.poses.data() + first;
   const size_t n = end - first;
   if (n < 4) {  // nothing to smooth
@@ -235,8 +233,7 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
   const double* const u = job.surface != nullptr ? job.u.data() + first : nullptr;
   const std::vector<double> s = TipArcLength(poses, n);
   std::vector<bool> zone;
-  st = FindZonesOfRun(job, first, s, a, c, report, &zone);
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(FindZonesOfRun(job, first, s, a, c, report, &zone));
   std::vector<double> weights(n, 1.0);
   for (size_t i = 0; i < n; ++i) {
     report->poses_in_zones += zone[i];
@@ -244,8 +241,8 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
   }
   const double tol_rad = options.angle_tolerance_deg / kRadToDeg;
   SmoothingSpline a_fit, c_fit;
-  st = SmoothingSpline::FitEachWithinTolerance(s, {&a, &c}, weights, tol_rad, {&a_fit, &c_fit});
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(
+      SmoothingSpline::FitEachWithinTolerance(s, {&a, &c}, weights, tol_rad, {&a_fit, &c_fit}));
 
   // A pose may move when neither it nor a neighbour is a rapid end.
   auto movable = [&](size_t i) {
@@ -389,8 +386,7 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   // path's start), where the projection searches the whole rail afresh.
   if (surface != nullptr) {
     job.u = ProjectPathOntoRail(surface->rail(0), in);
-    const Status st = PoseOverhangs(surface->rail(0), in, job.u, &job.overhang_mm);
-    if (!st.ok()) return st;
+    RETURN_IF_ERROR(PoseOverhangs(surface->rail(0), in, job.u, &job.overhang_mm));
   }
   ToolPath result = WithoutPoses(in);
   result.poses.reserve(options.insert_transitions ? 2 * in.poses.size() : in.poses.size());
@@ -401,8 +397,7 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   const size_t n = in.poses.size();
   for (size_t first = 0; first < n;) {
     const size_t end = RunEnd(in, first);
-    Status st = SmoothRun(job, first, end, &result.poses, report);
-    if (!st.ok()) return st;
+    RETURN_IF_ERROR(SmoothRun(job, first, end, &result.poses, report));
     first = end;
   }
   *out = std::move(result);
