@@ -81,8 +81,7 @@ Status LoadFreeformSurface(const std::string& path, FreeformSurface* surface,
   CadSurfaceInfo info;
   BSplineSurface bspline;
   double side_sign = 1.0;
-  Status s = ReadCadBSplineSurface(path, CadOptionsFromFlags(), &bspline, &side_sign, &info);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ReadCadBSplineSurface(path, CadOptionsFromFlags(), &bspline, &side_sign, &info));
   const std::string what = path + ": face " + std::to_string(info.face.index);
   if (bspline.degree_u() != 3 || bspline.degree_v() != 3) {
     return Status::Error(what + ": degree " + std::to_string(bspline.degree_u()) + " x " +
@@ -91,8 +90,8 @@ Status LoadFreeformSurface(const std::string& path, FreeformSurface* surface,
   const size_t slash = path.find_last_of('/');
   const std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1) + " face " +
                            std::to_string(info.face.index);
-  s = FreeformSurface::Create(name, bspline.knots_u(), bspline.knots_v(), PatchOf(bspline).poles,
-                              side_sign, what, surface);
+  Status s = FreeformSurface::Create(name, bspline.knots_u(), bspline.knots_v(),
+                                     PatchOf(bspline).poles, side_sign, what, surface);
   if (s.ok() && cad != nullptr) *cad = info;
   return s;
 }
@@ -138,8 +137,7 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
   const std::string ext = Extension(path);
   if (IsApt(ext)) {
     PartSetup setup;
-    Status s = PartSetupFromFlag(&setup);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(PartSetupFromFlag(&setup));
     const bool program = source != nullptr && tool_path.program != nullptr &&
                          tool_path.program->format == ProgramFormat::kApt;
     if (setup.IsIdentity()) {
@@ -257,8 +255,7 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
   } else if (!have_file) {
     c.flute_length_mm = surface != nullptr ? 1.25 * LongestRulingMm(*surface) : 100.0;
   }
-  Status s = c.Validate("cutter");
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(c.Validate("cutter"));
   *cutter = c;
   return Status::Ok();
 }

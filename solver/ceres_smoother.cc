@@ -384,8 +384,7 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
                          " poses, the input " + std::to_string(n));
   }
   std::vector<JointVector> joints;
-  Status s = in.machine->AssignJoints(guess, &joints);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(in.machine->AssignJoints(guess, &joints));
   state->poses.resize(n);
   state->s_mm.assign(n, 0.0);
   state->t_s.assign(n, 0.0);
@@ -438,8 +437,7 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   AddTolerancePoints(in, o, free_pose, state, problem);
   std::vector<double> overhang_mm;
   if (in.surface != nullptr) {
-    s = PoseOverhangs(in.surface->rail(0), path, state->u, &overhang_mm);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(PoseOverhangs(in.surface->rail(0), path, state->u, &overhang_mm));
   }
   for (size_t i = 0; i < n; ++i) {
     if (!free_pose[i] || o.w_tip_height <= 0 || in.surface == nullptr) continue;
@@ -513,8 +511,7 @@ Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptio
   distinct.input = &input;
   distinct.initial_guess = &guess;
   ToolPath solved;
-  Status s = SolveCoarseToFine(distinct, options, &solved, report);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(SolveCoarseToFine(distinct, options, &solved, report));
   *out = *inputs.input;
   for (size_t i = 0; i < out->poses.size(); ++i) {
     out->poses[i].p_w_tip = solved.poses[index[i]].p_w_tip;
@@ -530,8 +527,7 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
   const auto start = std::chrono::steady_clock::now();
   ceres::Problem problem;
   SmoothingState state;
-  Status s = BuildProblem(inputs, options, &state, &problem);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(BuildProblem(inputs, options, &state, &problem));
 
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
@@ -581,7 +577,7 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
   // path, a level's excursion would surface later as an error about a pose
   // the input never had.
   std::vector<JointVector> joints;
-  s = inputs.machine->AssignJoints(*out, &joints);
+  Status s = inputs.machine->AssignJoints(*out, &joints);
   if (s.ok()) s = inputs.machine->CheckTravel(*out, joints);
   if (!s.ok()) {
     return Status::Error("a solve over " + std::to_string(out->poses.size()) +

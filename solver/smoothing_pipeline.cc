@@ -103,8 +103,7 @@ void GrowActiveSet(const DeviationReport& out, const std::vector<size_t>& beyond
 Status RunPeaks(const ToolPath& path, const Machine& machine, double default_feed_mm_per_min,
                 std::vector<std::array<double, 2>>* peaks) {
   std::vector<JointVector> joints;
-  Status s = machine.AssignJoints(path, &joints);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(machine.AssignJoints(path, &joints));
   const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
   peaks->clear();
   for (size_t first = 0; first < path.poses.size();) {
@@ -217,10 +216,9 @@ Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per
     const int kept = static_cast<int>(std::count(back.begin(), back.end(), true));
     if (kept == 0) return Status::Ok();
     PathMetrics metrics;
-    Status s = evaluate("the output with " + std::to_string(kept) + " runs kept as programmed",
-                        composed, &metrics);
-    if (s.ok()) s = WithinTravel(*job.machine, composed);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(evaluate("the output with " + std::to_string(kept) + " runs kept as programmed",
+                             composed, &metrics));
+    RETURN_IF_ERROR(WithinTravel(*job.machine, composed));
     if (tolerance_mm <= 0.0 || kept == static_cast<int>(back.size()) ||
         BeyondTolerance(*result->input_metrics.deviation, *metrics.deviation, tolerance_mm,
                         kSameMovesSlackMm)
@@ -322,8 +320,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                         &result->output, &back)) {
       result->runs_kept_as_input = static_cast<int>(std::count(back.begin(), back.end(), true));
     }
-    s = finish_output();
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(finish_output());
   } else {
     // Without a surface the band around the program is the only measure of
     // accuracy, and the input is the one start known to lie inside it. With
@@ -374,8 +371,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
             "the high_accuracy solve failed: Ceres found no usable solution (" +
             result->high_accuracy.message + ")");
       }
-      s = finish_output();
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(finish_output());
       result->solve_tolerance_mm = options.tolerance_mm;
       result->tolerance_rounds = round;
       result->tolerance_points = static_cast<int>(active.size());
