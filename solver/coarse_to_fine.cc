@@ -11,21 +11,9 @@
 namespace tpopt {
 namespace {
 
-// Tip arc length along `path`, each step at least `floor_mm` so that a
-// pose that only turns the axis still gets its own parameter.
-std::vector<double> TipArcLength(const ToolPath& path) {
-  const size_t n = path.poses.size();
-  std::vector<double> s(n, 0.0);
-  if (n < 2) return s;
-  double total = 0.0;
-  for (size_t i = 1; i < n; ++i) total += (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
-  const double floor_mm = std::max(1e-9, 1e-6 * total / static_cast<double>(n - 1));
-  for (size_t i = 1; i < n; ++i) {
-    const double ds = (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
-    s[i] = s[i - 1] + std::max(ds, floor_mm);
-  }
-  return s;
-}
+// The fine path's parameter: scaled to the path's own steps, so that the
+// floor stays far below any real move at every size of part.
+constexpr ArcLengthStepFloor kStationStepFloor = {1e-9, 1e-6};
 
 // `stations` with every held pose added (the first `held_first` and the
 // last `held_last` of n): a held pose must keep its guess at every level,
@@ -68,7 +56,8 @@ Status InterpolateStations(const ToolPath& fine, const std::vector<size_t>& stat
   CHECK_EQ(stations.size(), coarse.poses.size());
   std::vector<JointVector> joints;
   RETURN_IF_ERROR(machine.AssignJoints(coarse, &joints));
-  const std::vector<double> s = TipArcLength(fine);
+  const std::vector<double> s =
+      TipArcLength(fine.poses.data(), fine.poses.size(), kStationStepFloor);
   ToolPath result = fine;
   // Each run [first, last] of the fine path starts and ends at a station.
   for (size_t j = 0; j < stations.size();) {

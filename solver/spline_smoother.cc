@@ -12,6 +12,7 @@
 #include "model/units.h"
 #include "solver/overhang.h"
 #include "solver/pole_crossing.h"
+#include "solver/pose_spline.h"
 #include "solver/smoothing_spline.h"
 
 namespace tpopt {
@@ -144,7 +145,7 @@ bool SplineSmootherOptions::IsValid(std::string* why) const {
 namespace {
 
 // What every cutting run of one SmoothWithSplines call shares.
-struct SmoothingJob {
+struct SplineJob {
   const ToolPath& in;
   const Machine& machine;
   const RuledSurface* surface;  // may be null
@@ -155,19 +156,10 @@ struct SmoothingJob {
   std::vector<PolePassage> through_pole;  // passages of `in` routed through the pole
 };
 
-// Arc length of the tip along poses[0, n), each step at least kMinStepMm.
-std::vector<double> TipArcLength(const ToolPose* poses, size_t n) {
-  std::vector<double> s(n, 0.0);
-  for (size_t i = 1; i < n; ++i) {
-    s[i] = s[i - 1] + std::max(kMinStepMm, (poses[i].p_w_tip - poses[i - 1].p_w_tip).norm());
-  }
-  return s;
-}
-
 // Zones of abrupt rotary acceleration and, with a surface, of fast
 // Gaussian-curvature change (u: the contact rulings), and the passages
 // routed through the pole (poses first.. of job.in), padded.
-std::vector<bool> FindZones(const SmoothingJob& job, size_t first, const std::vector<double>& s,
+std::vector<bool> FindZones(const SplineJob& job, size_t first, const std::vector<double>& s,
                             const std::vector<double>& a, const std::vector<double>& c,
                             SplineSmootherReport* report) {
   const SplineSmootherOptions& options = job.options;
@@ -203,7 +195,7 @@ std::vector<bool> FindZones(const SmoothingJob& job, size_t first, const std::ve
 // out of the zone to hold the curves to them. On the impeller's CAM path
 // with 0.3 deg noise at a 1 deg tolerance, zones on the raw angles left the
 // peak d2C/ds2 at 29x the clean path's; on the fit, 1.1x.
-Status FindZonesOfRun(const SmoothingJob& job, size_t first, const std::vector<double>& s,
+Status FindZonesOfRun(const SplineJob& job, size_t first, const std::vector<double>& s,
                       const std::vector<double>& a, const std::vector<double>& c,
                       SplineSmootherReport* report, std::vector<bool>* zone) {
   if (!job.options.smooth_outside_zones) {
@@ -219,7 +211,7 @@ Status FindZonesOfRun(const SmoothingJob& job, size_t first, const std::vector<d
 
 // The method on the cutting run [first, end) of job.in (no rapid after its
 // first pose); appends the run's poses to `out`.
-Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<ToolPose>* out,
+Status SmoothRun(const SplineJob& job, size_t first, size_t end, std::vector<ToolPose>* out,
                  SplineSmootherReport* report) {
   const SplineSmootherOptions& options = job.options;
   std::vector<double> a, c;
@@ -231,7 +223,7 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
     return Status::Ok();
   }
   const double* const u = job.surface != nullptr ? job.u.data() + first : nullptr;
-  const std::vector<double> s = TipArcLength(poses, n);
+  const std::vector<double> s = TipArcLength(poses, n, {kMinStepMm, 0.0});
   std::vector<bool> zone;
   RETURN_IF_ERROR(FindZonesOfRun(job, first, s, a, c, report, &zone));
   std::vector<double> weights(n, 1.0);
@@ -381,7 +373,7 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   std::vector<PolePassage> through_pole;
   const ToolPath& source =
       RouteThroughPoles(in, machine, options, &routed, &through_pole, report) ? routed : in;
-  SmoothingJob job{source, machine, surface, cutter, options, {}, {}, std::move(through_pole)};
+  SplineJob job{source, machine, surface, cutter, options, {}, {}, std::move(through_pole)};
   // Projected once for the whole path: every run starts at a rapid (or the
   // path's start), where the projection searches the whole rail afresh.
   if (surface != nullptr) {
