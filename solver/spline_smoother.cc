@@ -192,9 +192,8 @@ std::vector<bool> FindZones(const SplineJob& job, size_t first, const std::vecto
 // move onto the curves, the zones are found on a first fit without them:
 // noise within the tolerance would otherwise set the median, and with it
 // a threshold that only a distortion's peak exceeds, leaving its flanks
-// out of the zone to hold the curves to them. On the impeller's CAM path
-// with 0.3 deg noise at a 1 deg tolerance, zones on the raw angles left the
-// peak d2C/ds2 at 29x the clean path's; on the fit, 1.1x.
+// out of the zone to hold the curves to them (README, "Figures behind the
+// defaults").
 Status FindZonesOfRun(const SplineJob& job, size_t first, const std::vector<double>& s,
                       const std::vector<double>& a, const std::vector<double>& c,
                       SplineSmootherReport* report, std::vector<bool>* zone) {
