@@ -19,6 +19,26 @@ Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion
   return Status::Ok();
 }
 
+Status FeedScheduleOptionsFromFlags(FeedScheduleOptions* feed) {
+  feed->default_feed_mm_per_min = FLAGS_feed;
+  if (FLAGS_feed_mode != "lower" && FLAGS_feed_mode != "raise" &&
+      FLAGS_feed_mode != "keep_run_time") {
+    return Status::Usage("--feed_mode=" + FLAGS_feed_mode +
+                         " must be lower, raise or keep_run_time");
+  }
+  feed->mode = FLAGS_feed_mode == "raise"           ? FeedMode::kRaise
+               : FLAGS_feed_mode == "keep_run_time" ? FeedMode::kKeepRunTime
+                                                    : FeedMode::kLower;
+  feed->keep_input_peaks = FLAGS_raise_within_input_peaks;
+  feed->keep_run_time_window_mm = FLAGS_keep_run_time_window_mm;
+  if (FLAGS_max_feed_mm_per_min != 0.0) feed->max_feed_mm_per_min = FLAGS_max_feed_mm_per_min;
+  feed->max_feed_factor = FLAGS_max_feed_factor;
+  feed->max_feed_step = FLAGS_max_feed_step;
+  std::string why;
+  if (!feed->IsValid(&why)) return Status::Usage(why);
+  return Status::Ok();
+}
+
 Status LinkMoveOptionsFromFlags(LinkMoveOptions* links) {
   links->feed_ratio = FLAGS_link_feed_ratio;
   std::string why;

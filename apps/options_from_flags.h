@@ -9,11 +9,16 @@
 #include "model/status.h"
 #include "solver/ceres_smoother.h"
 #include "solver/curve_output.h"
+#include "solver/feed_scheduler.h"
 #include "solver/spline_smoother.h"
 
 namespace tpopt {
 
 Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion);
+
+// --feed, --feed_mode and the limits on raised feeds; errors are usage
+// errors.
+Status FeedScheduleOptionsFromFlags(FeedScheduleOptions* feed);
 
 Status LinkMoveOptionsFromFlags(LinkMoveOptions* links);
 
