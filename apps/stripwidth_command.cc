@@ -106,6 +106,77 @@ nlohmann::json StripMetricsJson(const StripPathMetrics& m) {
           {"cc_second_difference_max_mm", m.cc_second_difference_max_mm}};
 }
 
+// The pass planned on the surface, as CC points and as the CL path written,
+// with the machine's motion along it and the time the planning took.
+struct StripRun {
+  FreeformSurface surface;
+  Machine machine;
+  std::optional<CadSurfaceInfo> cad;
+  std::vector<StripPoint> points;
+  ToolPath path;
+  PathMetrics motion;
+  double solve_s = 0.0;
+};
+
+// Loads the surface and the machine, plans the pass and measures its
+// motion; `run->path` is made even on failure (as the report's title needs
+// the surface's name).
+Status PlanStripRun(const TorusCutter& cutter, const StripPathOptions& options,
+                    const DeviationOptions& deviation_options, const MotionOptions& motion_options,
+                    StripRun* run) {
+  const auto start = std::chrono::steady_clock::now();
+  Status s = LoadFreeformSurface(FLAGS_surface, &run->surface, &run->cad);
+  if (s.ok()) s = LoadMachine(FLAGS_machine, &run->machine);
+  if (s.ok()) {
+    s = PlanStripPath(run->surface, cutter, options, &run->points);
+    if (!s.ok()) s = Status::Error(FLAGS_surface + ": " + s.message());
+  }
+  run->solve_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run->path = StripPathToToolPath(
+      run->points, cutter, FLAGS_feed,
+      "tpopt stripwidth " + FLAGS_method + " torus R " + std::to_string(cutter.radius_mm) +
+          " r " + std::to_string(cutter.corner_radius_mm) + " on " + run->surface.name());
+  if (s.ok()) {
+    // Motion on the machine only: the deviation evaluator is for ruled
+    // surfaces, and the strip deviation is measured above.
+    Cutter as_written = *run->path.cutter;
+    s = EvaluatePath(run->path, run->machine, nullptr, as_written, deviation_options,
+                     motion_options, &run->motion);
+  }
+  return s;
+}
+
+nlohmann::json StripReportJson(const Invocation& invocation, const TorusCutter& cutter,
+                               const StripPathOptions& options, const StripRun& run,
+                               const StripPathMetrics& strips) {
+  nlohmann::json report = MetricsJson(run.motion);
+  report["command"] = invocation.command_line;
+  report["method"] = FLAGS_method;
+  report["surface"] = FLAGS_surface;
+  if (run.cad) report["surface_cad"] = CadInfoJson(*run.cad);
+  report["machine"] = run.machine.name;
+  report["cutter"] = {{"radius_mm", cutter.radius_mm},
+                      {"corner_radius_mm", cutter.corner_radius_mm}};
+  report["tolerance_mm"] = options.posture.tolerance_mm;
+  report["strips"] = StripMetricsJson(strips);
+  report["cc_points"] = PointsJson(run.points);
+  report["solve_time_s"] = run.solve_s;
+  return report;
+}
+
+void PrintStripSummary(const StripRun& run, const StripPathMetrics& strips) {
+  const auto& a = run.motion.motion.axes[kA];
+  const auto& c = run.motion.motion.axes[kC];
+  std::printf(
+      "%s: %zu CC points, strip width mean %.4f min %.4f mm, worst deviation %.5f mm, "
+      "tool-centre fluctuation max %.5f rms %.5f mm, peak d2A/ds2 %.5f d2C/ds2 %.5f deg/mm^2, "
+      "%.2f s\n",
+      FLAGS_method.c_str(), run.points.size(), strips.mean_width_mm, strips.min_width_mm,
+      strips.worst_deviation_mm, strips.centre_fluctuation_max_mm,
+      strips.centre_fluctuation_rms_mm, a.peak_second_derivative_per_mm2 / kDegToRad,
+      c.peak_second_derivative_per_mm2 / kDegToRad, run.solve_s);
+}
+
 }  // namespace
 
 int RunStripWidth(const Invocation& invocation) {
@@ -119,64 +190,18 @@ int RunStripWidth(const Invocation& invocation) {
     std::fprintf(stderr, "tpopt stripwidth: %s\n", s.message().c_str());
     return ExitCodeOf(s);
   }
-  FreeformSurface surface;
-  Machine machine;
-  std::vector<StripPoint> points;
-  const auto start = std::chrono::steady_clock::now();
-  std::optional<CadSurfaceInfo> cad;
-  s = LoadFreeformSurface(FLAGS_surface, &surface, &cad);
-  if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
-  if (s.ok()) {
-    s = PlanStripPath(surface, cutter, options, &points);
-    if (!s.ok()) s = Status::Error(FLAGS_surface + ": " + s.message());
-  }
-  const double solve_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const ToolPath path = StripPathToToolPath(
-      points, cutter, FLAGS_feed,
-      "tpopt stripwidth " + FLAGS_method + " torus R " + std::to_string(cutter.radius_mm) +
-          " r " + std::to_string(cutter.corner_radius_mm) + " on " + surface.name());
-  PathMetrics motion;
-  if (s.ok()) {
-    // Motion on the machine only: the deviation evaluator is for ruled
-    // surfaces, and the strip deviation is measured above.
-    Cutter as_written = *path.cutter;
-    s = EvaluatePath(path, machine, nullptr, as_written, deviation_options, motion_options,
-                     &motion);
-  }
-  if (s.ok()) s = SaveToolPath(FLAGS_out, machine, path);
-  const StripPathMetrics strips = s.ok() ? MeasureStripPath(points) : StripPathMetrics();
+  StripRun run;
+  s = PlanStripRun(cutter, options, deviation_options, motion_options, &run);
+  if (s.ok()) s = SaveToolPath(FLAGS_out, run.machine, run.path);
+  const StripPathMetrics strips = s.ok() ? MeasureStripPath(run.points) : StripPathMetrics();
   if (s.ok() && !FLAGS_report.empty()) {
-    nlohmann::json report = MetricsJson(motion);
-    report["command"] = invocation.command_line;
-    report["method"] = FLAGS_method;
-    report["surface"] = FLAGS_surface;
-    if (cad) report["surface_cad"] = CadInfoJson(*cad);
-    report["machine"] = machine.name;
-    report["cutter"] = {{"radius_mm", cutter.radius_mm},
-                        {"corner_radius_mm", cutter.corner_radius_mm}};
-    report["tolerance_mm"] = options.posture.tolerance_mm;
-    report["strips"] = StripMetricsJson(strips);
-    report["cc_points"] = PointsJson(points);
-    report["solve_time_s"] = solve_s;
-    s = WriteReport(FLAGS_report, report);
+    s = WriteReport(FLAGS_report, StripReportJson(invocation, cutter, options, run, strips));
   }
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt stripwidth: %s\n", s.message().c_str());
     return ExitCodeOf(s);
   }
-  if (!FLAGS_quiet) {
-    const auto& a = motion.motion.axes[kA];
-    const auto& c = motion.motion.axes[kC];
-    std::printf(
-        "%s: %zu CC points, strip width mean %.4f min %.4f mm, worst deviation %.5f mm, "
-        "tool-centre fluctuation max %.5f rms %.5f mm, peak d2A/ds2 %.5f d2C/ds2 %.5f deg/mm^2, "
-        "%.2f s\n",
-        FLAGS_method.c_str(), points.size(), strips.mean_width_mm, strips.min_width_mm,
-        strips.worst_deviation_mm, strips.centre_fluctuation_max_mm,
-        strips.centre_fluctuation_rms_mm, a.peak_second_derivative_per_mm2 / kDegToRad,
-        c.peak_second_derivative_per_mm2 / kDegToRad, solve_s);
-  }
+  if (!FLAGS_quiet) PrintStripSummary(run, strips);
   return kExitSuccess;
 }
 
