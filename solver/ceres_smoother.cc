@@ -373,9 +373,12 @@ HighAccuracyOptions HighAccuracyOptions::SurfaceFree() {
   return options;
 }
 
-Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
-                    SmoothingState* state, ceres::Problem* problem) {
-  CHECK(in.input && in.cutter && in.machine && state && problem);
+namespace {
+
+// BuildProblem's first stage: the guess's joints as the parameters, and the
+// parameters s (mm) and t (s) of every pose.
+Status InitialState(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                    SmoothingState* state) {
   const ToolPath& guess = in.initial_guess ? *in.initial_guess : *in.input;
   const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
@@ -413,8 +416,14 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
     const double dt = SegmentTime(*in.machine, path, joints, i - 1, o.default_feed_mm_per_min);
     state->t_s[i] = state->t_s[i - 1] + std::max(dt, kMinStep);
   }
-  const double length_mm = std::max(state->s_mm.back(), kMinStep);
-  const std::vector<bool> free_pose = FreePoses(in);
+  return Status::Ok();
+}
+
+// One parameter block a pose: held poses constant, A of the free ones
+// within its travel.
+void AddPoseBlocks(const SmoothingInputs& in, const std::vector<bool>& free_pose,
+                   SmoothingState* state, ceres::Problem* problem) {
+  const size_t n = in.input->poses.size();
   const AxisLimits& a_travel = in.machine->limits[kA];
   for (size_t i = 0; i < n; ++i) {
     double* pose = state->poses[i].data();
@@ -428,13 +437,15 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
     if (std::isfinite(a_travel.min)) problem->SetParameterLowerBound(pose, kPoseA, a_travel.min);
     if (std::isfinite(a_travel.max)) problem->SetParameterUpperBound(pose, kPoseA, a_travel.max);
   }
-  if (in.surface == nullptr) {
-    AddToleranceFamily(in, o, length_mm, free_pose, state, problem);
-  } else {
-    AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
-  }
-  AddWallFamily(in, o, length_mm, free_pose, state, problem);
-  AddTolerancePoints(in, o, free_pose, state, problem);
+}
+
+// With a surface, each free pose's tip held at the input's overhang below
+// the floor (solver/tip_height_cost.h).
+Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                          double length_mm, const std::vector<bool>& free_pose,
+                          SmoothingState* state, ceres::Problem* problem) {
+  const ToolPath& path = *in.input;
+  const size_t n = path.poses.size();
   std::vector<double> overhang_mm;
   if (in.surface != nullptr) {
     RETURN_IF_ERROR(PoseOverhangs(in.surface->rail(0), path, state->u, &overhang_mm));
@@ -448,6 +459,14 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
                               std::sqrt(o.w_tip_height * h / length_mm) / o.tolerance_mm),
         nullptr, state->poses[i].data()));
   }
+  return Status::Ok();
+}
+
+// The second and third derivatives of the joints and the tip along s.
+void AddSmoothnessFamilies(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                           double length_mm, const std::vector<bool>& free_pose,
+                           SmoothingState* state, ceres::Problem* problem) {
+  const ToolPath& path = *in.input;
   // A family whose weights are all zero adds nothing but work: its zero
   // Jacobians still go through the linear algebra (more than half the
   // surface-free preset's solve, which sets w_third = 0).
@@ -463,6 +482,26 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
                                        o.w_tip_third);
     });
   }
+}
+
+}  // namespace
+
+Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                    SmoothingState* state, ceres::Problem* problem) {
+  CHECK(in.input && in.cutter && in.machine && state && problem);
+  RETURN_IF_ERROR(InitialState(in, o, state));
+  const double length_mm = std::max(state->s_mm.back(), kMinStep);
+  const std::vector<bool> free_pose = FreePoses(in);
+  AddPoseBlocks(in, free_pose, state, problem);
+  if (in.surface == nullptr) {
+    AddToleranceFamily(in, o, length_mm, free_pose, state, problem);
+  } else {
+    AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
+  }
+  AddWallFamily(in, o, length_mm, free_pose, state, problem);
+  AddTolerancePoints(in, o, free_pose, state, problem);
+  RETURN_IF_ERROR(AddTipHeightFamily(in, o, length_mm, free_pose, state, problem));
+  AddSmoothnessFamilies(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<1>(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<2>(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<3>(in, o, length_mm, free_pose, state, problem);
