@@ -239,6 +239,221 @@ Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per
   }
 }
 
+// What the stages of one RunSmoothing share: the job and its settings, the
+// result being filled, and the grid every path is judged on.
+struct SmoothingRun {
+  const SmoothingJob& job;
+  const SmoothingSettings& settings;
+  SmoothingResult* result;
+  // With judge_on_input_range every path is judged on one grid: the
+  // input's covered range (or the one asked for), never the range a
+  // smoothed path happens to cover.
+  DeviationOptions deviation;
+
+  void Stage(const std::string& name) const {
+    if (settings.on_stage) settings.on_stage(name);
+  }
+
+  Status Evaluate(const std::string& what, const ToolPath& path, PathMetrics* metrics) const {
+    Stage("evaluating " + what);
+    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, deviation, settings.motion,
+                        metrics);
+  }
+
+  // Resamples result->output if asked, evaluates it and holds it to the
+  // machine's travel.
+  Status FinishOutput() const {
+    if (settings.resample_step_mm > 0) {
+      Stage("resampling");
+      ResampleOptions resample;
+      resample.step_mm = settings.resample_step_mm;
+      Status r = ResamplePath(result->output, *job.machine, resample, &result->output);
+      if (!r.ok()) return Status::Error("resampling: " + r.message());
+    }
+    Status r = Evaluate("the output", result->output, &result->output_at_input_feed);
+    if (r.ok()) r = WithinTravel(*job.machine, result->output);
+    if (!r.ok()) {
+      return Status::SolverFailure("the smoothed path does not fit the machine (" + r.message() +
+                                   ")");
+    }
+    return Status::Ok();
+  }
+};
+
+// The input's metrics (fixing the judged range) and its travel.
+Status JudgeInput(SmoothingRun* run) {
+  const SmoothingJob& job = run->job;
+  SmoothingResult* result = run->result;
+  Status s = run->Evaluate("the input", *job.input, &result->input_metrics);
+  // (The range itself, not the grid's ends: u_min + (u_max - u_min) i / n
+  // can round past 1 at the last point.)
+  if (s.ok() && job.surface != nullptr && run->settings.judge_on_input_range &&
+      std::isnan(run->deviation.u_min)) {
+    CoveredRangeU(*job.surface, *job.input, &run->deviation.u_min, &run->deviation.u_max);
+  }
+  if (s.ok()) s = WithinTravel(*job.machine, *job.input);
+  if (!s.ok()) return Status::Error(s.message());
+  return Status::Ok();
+}
+
+// Without a surface the band around the program is the only measure of
+// accuracy, and the input is the one start known to lie inside it. With
+// one, the start is the spline path or the poses placed on the surface
+// at their own contacts (solver/surface_placement.h), whichever the
+// judge finds nearer the surface: a noisy CAM path's spline stays as far
+// off as the input (tenths of a millimetre), and the solve from there
+// ends in a local minimum. Sets result->initial_guess_metrics and
+// start_placed_on_surface; `placed` holds the placed poses.
+Status ChooseStart(const SmoothingRun& run, const ToolPath& spline_path, ToolPath* placed) {
+  const SmoothingJob& job = run.job;
+  SmoothingResult* result = run.result;
+  bool start_placed = false;
+  if (job.surface != nullptr) {
+    Status s = run.Evaluate("the spline start", spline_path, &result->initial_guess_metrics);
+    if (!s.ok()) return Status::SolverFailure("spline start: " + s.message());
+    run.Stage("placing the poses on the surface");
+    PathMetrics placed_metrics;
+    s = PlaceOnSurface(*job.input, *job.surface, *job.cutter, placed);
+    if (s.ok()) s = run.Evaluate("the placed start", *placed, &placed_metrics);
+    if (!s.ok()) return Status::SolverFailure("placement: " + s.message());
+    if (WorstDeviationMm(placed_metrics) < WorstDeviationMm(result->initial_guess_metrics)) {
+      start_placed = true;
+      result->initial_guess_metrics = std::move(placed_metrics);
+    }
+  } else {
+    Status s = run.Evaluate("the initial guess", *job.input, &result->initial_guess_metrics);
+    if (!s.ok()) return Status::Error(s.message());
+  }
+  result->start_placed_on_surface = start_placed;
+  return Status::Ok();
+}
+
+// The high-accuracy solve from `guess`, solved again with the points it
+// leaves beyond the tolerance held (when held_to_tolerance), and refused
+// if still beyond after kToleranceRounds or worse than its start.
+Status SolveWithinTolerance(const SmoothingRun& run, const ToolPath& guess,
+                            const HighAccuracyOptions& options, bool held_to_tolerance) {
+  const SmoothingJob& job = run.job;
+  SmoothingResult* result = run.result;
+  std::vector<TolerancePoint> active;
+  SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
+  inputs.tolerance_points = &active;
+  for (int round = 0;; ++round) {
+    run.Stage(round == 0 ? "high_accuracy solve"
+                         : "high_accuracy solve, " + std::to_string(active.size()) +
+                               " points held to the tolerance");
+    // The input passed its checks above, so whatever the solve reports
+    // is the solver's failure, not the input's.
+    Status s = SmoothBothWaysRoundPoles(inputs, options, &result->output, &result->high_accuracy);
+    if (!s.ok()) {
+      return Status::SolverFailure("the high_accuracy solve failed: " + s.message());
+    }
+    if (!result->high_accuracy.converged) {
+      return Status::SolverFailure(
+          "the high_accuracy solve failed: Ceres found no usable solution (" +
+          result->high_accuracy.message + ")");
+    }
+    RETURN_IF_ERROR(run.FinishOutput());
+    result->solve_tolerance_mm = options.tolerance_mm;
+    result->tolerance_rounds = round;
+    result->tolerance_points = static_cast<int>(active.size());
+    if (held_to_tolerance) {
+      const DeviationReport& in = *result->input_metrics.deviation;
+      const DeviationReport& out = *result->output_at_input_feed.deviation;
+      const std::vector<size_t> beyond = BeyondTolerance(in, out, options.tolerance_mm);
+      if (!beyond.empty() && round == kToleranceRounds) {
+        double heaviest = 0.0;
+        for (const TolerancePoint& p : active) heaviest = std::max(heaviest, p.weight);
+        std::ostringstream why;
+        why << BeyondToleranceMessage(in, out, beyond, options.tolerance_mm) << ", after "
+            << round << " rounds holding " << active.size()
+            << " points to the tolerance with penalties up to " << heaviest
+            << " times the surface's weight";
+        return Status::SolverFailure(why.str());
+      }
+      if (!beyond.empty()) {
+        GrowActiveSet(out, beyond, &active);
+        continue;
+      }
+    }
+    // The path to be returned. Held to the tolerance it leaves no grid
+    // point beyond both the tolerance and the input, a pointwise promise
+    // that the start, itself beyond the tolerance where a noisy input
+    // happened to be within it, need not keep: judged against the
+    // start's max |dev| alone, a solve that met it was refused. So there
+    // it is worse only when it breaks more axis limits than the start and
+    // the input and is not nearer the surface than the start.
+    const PathMetrics& out_metrics = result->output_at_input_feed;
+    const PathMetrics& start_metrics = result->initial_guess_metrics;
+    const bool worse =
+        IsWorseThan(out_metrics, start_metrics) &&
+        (!held_to_tolerance ||
+         out_metrics.motion.limit_violations >
+             std::max(start_metrics.motion.limit_violations,
+                      result->input_metrics.motion.limit_violations));
+    if (worse) {
+      return Status::SolverFailure(
+          held_to_tolerance
+              ? "the optimised path breaks more axis limits than its starting point and the "
+                "input, and is no nearer the surface than its start (try other weights)"
+              : "the optimised path is worse than its starting point on deviation and limits "
+                "(try other weights)");
+    }
+    return Status::Ok();
+  }
+}
+
+// High-accuracy mode after the spline method: the start, the solve held to
+// the tolerance, then the runs it made worse put back.
+Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& spline_path) {
+  const SmoothingJob& job = run.job;
+  const SmoothingSettings& settings = run.settings;
+  ToolPath placed;
+  RETURN_IF_ERROR(ChooseStart(run, spline_path, &placed));
+  const bool start_placed = run.result->start_placed_on_surface;
+  const ToolPath& guess =
+      job.surface == nullptr ? *job.input : start_placed ? placed : spline_path;
+  HighAccuracyOptions options = settings.high_accuracy;
+  options.interpolation = settings.deviation.interpolation;
+  const bool held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
+  RETURN_IF_ERROR(SolveWithinTolerance(run, guess, options, held_to_tolerance));
+  Status s;
+  if (settings.keep_runs_no_worse) {
+    const Evaluator evaluate = [&run](const std::string& what, const ToolPath& path,
+                                      PathMetrics* metrics) {
+      return run.Evaluate(what, path, metrics);
+    };
+    s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min,
+                              held_to_tolerance ? options.tolerance_mm : 0.0, evaluate,
+                              run.result);
+  }
+  if (!s.ok()) {
+    return Status::SolverFailure(
+        "the smoothed path with runs kept as programmed does not fit the machine (" +
+        s.message() + ")");
+  }
+  return Status::Ok();
+}
+
+// The feed scheduled on the output (raised feeds held to the input's own
+// peaks), and the output's metrics as written.
+Status ScheduleOutputFeed(const SmoothingRun& run) {
+  const SmoothingJob& job = run.job;
+  SmoothingResult* result = run.result;
+  std::vector<JointVector> joints;
+  run.Stage("scheduling the feed");
+  Status s = job.machine->AssignJoints(result->output, &joints);
+  FeedScheduleOptions feed = run.settings.feed;
+  for (int a = 0; a < 5; ++a) {  // what raised feeds may ask of each axis at most
+    feed.input_peak_acceleration[a] = result->input_metrics.motion.axes[a].peak_acceleration;
+    feed.input_peak_jerk[a] = result->input_metrics.motion.axes[a].peak_jerk;
+  }
+  if (s.ok()) s = ScheduleFeed(*job.machine, joints, feed, &result->output, &result->feed);
+  if (s.ok()) s = run.Evaluate("the output as written", result->output, &result->output_metrics);
+  if (!s.ok()) return Status::SolverFailure("feed scheduling: " + s.message());
+  return Status::Ok();
+}
+
 }  // namespace
 
 Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
@@ -254,27 +469,8 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
     return Status::Error("the path has no cutting move to smooth (" + std::to_string(poses.size()) +
                          " poses)");
   }
-  auto stage = [&](const std::string& name) {
-    if (settings.on_stage) settings.on_stage(name);
-  };
-  // With judge_on_input_range every path is judged on one grid: the
-  // input's covered range (or the one asked for), never the range a
-  // smoothed path happens to cover.
-  DeviationOptions deviation = settings.deviation;
-  auto evaluate = [&](const std::string& what, const ToolPath& path, PathMetrics* metrics) {
-    stage("evaluating " + what);
-    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, deviation,
-                        settings.motion, metrics);
-  };
-  Status s = evaluate("the input", *job.input, &result->input_metrics);
-  // (The range itself, not the grid's ends: u_min + (u_max - u_min) i / n
-  // can round past 1 at the last point.)
-  if (s.ok() && job.surface != nullptr && settings.judge_on_input_range &&
-      std::isnan(deviation.u_min)) {
-    CoveredRangeU(*job.surface, *job.input, &deviation.u_min, &deviation.u_max);
-  }
-  if (s.ok()) s = WithinTravel(*job.machine, *job.input);
-  if (!s.ok()) return Status::Error(s.message());
+  SmoothingRun run{job, settings, result, settings.deviation};
+  RETURN_IF_ERROR(JudgeInput(&run));
   if (!cuts) {
     // Every feed move is one to keep as programmed (held, such as a
     // program of pure rotary moves, or a link): the program goes out as it
@@ -287,31 +483,13 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
   const SplineSmootherOptions spline_options =
       high_accuracy ? ForHighAccuracyGuess(settings.spline) : settings.spline;
   ToolPath spline_path;
-  stage("spline smoothing");
-  s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
-                        &spline_path, &result->spline);
+  run.Stage("spline smoothing");
+  Status s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
+                               &spline_path, &result->spline);
   // The input was read and fits the machine: a method that fails on it fails
   // as a solver.
   if (!s.ok()) return Status::SolverFailure("spline smoothing: " + s.message());
 
-  // Resamples result->output if asked, evaluates it and holds it to the
-  // machine's travel.
-  auto finish_output = [&]() {
-    if (settings.resample_step_mm > 0) {
-      stage("resampling");
-      ResampleOptions resample;
-      resample.step_mm = settings.resample_step_mm;
-      Status r = ResamplePath(result->output, *job.machine, resample, &result->output);
-      if (!r.ok()) return Status::Error("resampling: " + r.message());
-    }
-    Status r = evaluate("the output", result->output, &result->output_at_input_feed);
-    if (r.ok()) r = WithinTravel(*job.machine, result->output);
-    if (!r.ok()) {
-      return Status::SolverFailure("the smoothed path does not fit the machine (" + r.message() +
-                                   ")");
-    }
-    return Status::Ok();
-  };
   if (!high_accuracy) {
     result->output = std::move(spline_path);
     std::vector<bool> back;
@@ -320,129 +498,13 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                         &result->output, &back)) {
       result->runs_kept_as_input = static_cast<int>(std::count(back.begin(), back.end(), true));
     }
-    RETURN_IF_ERROR(finish_output());
+    RETURN_IF_ERROR(run.FinishOutput());
   } else {
-    // Without a surface the band around the program is the only measure of
-    // accuracy, and the input is the one start known to lie inside it. With
-    // one, the start is the spline path or the poses placed on the surface
-    // at their own contacts (solver/surface_placement.h), whichever the
-    // judge finds nearer the surface: a noisy CAM path's spline stays as far
-    // off as the input (tenths of a millimetre), and the solve from there
-    // ends in a local minimum.
-    ToolPath placed;
-    bool start_placed = false;
-    if (job.surface != nullptr) {
-      s = evaluate("the spline start", spline_path, &result->initial_guess_metrics);
-      if (!s.ok()) return Status::SolverFailure("spline start: " + s.message());
-      stage("placing the poses on the surface");
-      PathMetrics placed_metrics;
-      s = PlaceOnSurface(*job.input, *job.surface, *job.cutter, &placed);
-      if (s.ok()) s = evaluate("the placed start", placed, &placed_metrics);
-      if (!s.ok()) return Status::SolverFailure("placement: " + s.message());
-      if (WorstDeviationMm(placed_metrics) < WorstDeviationMm(result->initial_guess_metrics)) {
-        start_placed = true;
-        result->initial_guess_metrics = std::move(placed_metrics);
-      }
-    } else {
-      s = evaluate("the initial guess", *job.input, &result->initial_guess_metrics);
-      if (!s.ok()) return Status::Error(s.message());
-    }
-    result->start_placed_on_surface = start_placed;
-    const ToolPath& guess =
-        job.surface == nullptr ? *job.input : start_placed ? placed : spline_path;
-    std::vector<TolerancePoint> active;
-    SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
-    inputs.tolerance_points = &active;
-    HighAccuracyOptions options = settings.high_accuracy;
-    options.interpolation = settings.deviation.interpolation;
-    const bool held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
-    for (int round = 0;; ++round) {
-      stage(round == 0 ? "high_accuracy solve"
-                       : "high_accuracy solve, " + std::to_string(active.size()) +
-                             " points held to the tolerance");
-      // The input passed its checks above, so whatever the solve reports
-      // is the solver's failure, not the input's.
-      s = SmoothBothWaysRoundPoles(inputs, options, &result->output, &result->high_accuracy);
-      if (!s.ok()) {
-        return Status::SolverFailure("the high_accuracy solve failed: " + s.message());
-      }
-      if (!result->high_accuracy.converged) {
-        return Status::SolverFailure(
-            "the high_accuracy solve failed: Ceres found no usable solution (" +
-            result->high_accuracy.message + ")");
-      }
-      RETURN_IF_ERROR(finish_output());
-      result->solve_tolerance_mm = options.tolerance_mm;
-      result->tolerance_rounds = round;
-      result->tolerance_points = static_cast<int>(active.size());
-      if (held_to_tolerance) {
-        const DeviationReport& in = *result->input_metrics.deviation;
-        const DeviationReport& out = *result->output_at_input_feed.deviation;
-        const std::vector<size_t> beyond = BeyondTolerance(in, out, options.tolerance_mm);
-        if (!beyond.empty() && round == kToleranceRounds) {
-          double heaviest = 0.0;
-          for (const TolerancePoint& p : active) heaviest = std::max(heaviest, p.weight);
-          std::ostringstream why;
-          why << BeyondToleranceMessage(in, out, beyond, options.tolerance_mm) << ", after "
-              << round << " rounds holding " << active.size()
-              << " points to the tolerance with penalties up to " << heaviest
-              << " times the surface's weight";
-          return Status::SolverFailure(why.str());
-        }
-        if (!beyond.empty()) {
-          GrowActiveSet(out, beyond, &active);
-          continue;
-        }
-      }
-      // The path to be returned. Held to the tolerance it leaves no grid
-      // point beyond both the tolerance and the input, a pointwise promise
-      // that the start, itself beyond the tolerance where a noisy input
-      // happened to be within it, need not keep: judged against the
-      // start's max |dev| alone, a solve that met it was refused. So there
-      // it is worse only when it breaks more axis limits than the start and
-      // the input and is not nearer the surface than the start.
-      const PathMetrics& out_metrics = result->output_at_input_feed;
-      const PathMetrics& start_metrics = result->initial_guess_metrics;
-      const bool worse =
-          IsWorseThan(out_metrics, start_metrics) &&
-          (!held_to_tolerance ||
-           out_metrics.motion.limit_violations >
-               std::max(start_metrics.motion.limit_violations,
-                        result->input_metrics.motion.limit_violations));
-      if (worse) {
-        return Status::SolverFailure(
-            held_to_tolerance
-                ? "the optimised path breaks more axis limits than its starting point and the "
-                  "input, and is no nearer the surface than its start (try other weights)"
-                : "the optimised path is worse than its starting point on deviation and limits "
-                  "(try other weights)");
-      }
-      break;
-    }
-    if (settings.keep_runs_no_worse) {
-      s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min,
-                                held_to_tolerance ? options.tolerance_mm : 0.0, evaluate, result);
-    }
-    if (!s.ok()) {
-      return Status::SolverFailure(
-          "the smoothed path with runs kept as programmed does not fit the machine (" +
-          s.message() + ")");
-    }
+    RETURN_IF_ERROR(SolveHighAccuracy(run, spline_path));
   }
   result->output_metrics = result->output_at_input_feed;
   if (!settings.schedule_feed) return Status::Ok();
-  std::vector<JointVector> joints;
-  stage("scheduling the feed");
-  s = job.machine->AssignJoints(result->output, &joints);
-  FeedScheduleOptions feed = settings.feed;
-  for (int a = 0; a < 5; ++a) {  // what raised feeds may ask of each axis at most
-    feed.input_peak_acceleration[a] = result->input_metrics.motion.axes[a].peak_acceleration;
-    feed.input_peak_jerk[a] = result->input_metrics.motion.axes[a].peak_jerk;
-  }
-  if (s.ok()) s = ScheduleFeed(*job.machine, joints, feed, &result->output, &result->feed);
-  if (s.ok()) s = evaluate("the output as written", result->output, &result->output_metrics);
-  if (!s.ok()) return Status::SolverFailure("feed scheduling: " + s.message());
-  return Status::Ok();
+  return ScheduleOutputFeed(run);
 }
 
 }  // namespace tpopt

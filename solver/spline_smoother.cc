@@ -210,31 +210,39 @@ Status FindZonesOfRun(const SplineJob& job, size_t first, const std::vector<doub
 
 // The method on the cutting run [first, end) of job.in (no rapid after its
 // first pose); appends the run's poses to `out`.
-Status SmoothRun(const SplineJob& job, size_t first, size_t end, std::vector<ToolPose>* out,
-                 SplineSmootherReport* report) {
+// SmoothRun's first stage: the run's zones (`zone`, one flag a pose) and
+// the smoothing splines of its angles a and c over its arc length s, the
+// zones weighted by options.zone_weight.
+Status FitRunAngles(const SplineJob& job, size_t first, const std::vector<double>& s,
+                    const std::vector<double>& a, const std::vector<double>& c,
+                    SplineSmootherReport* report, std::vector<bool>* zone,
+                    SmoothingSpline* a_fit, SmoothingSpline* c_fit) {
   const SplineSmootherOptions& options = job.options;
-  std::vector<double> a, c;
-  RETURN_IF_ERROR(job.machine.AssignRotaryAngles(job.in, first, end, &a, &c));
-  const ToolPose* const poses = job.in.poses.data() + first;
-  const size_t n = end - first;
-  if (n < 4) {  // nothing to smooth
-    out->insert(out->end(), poses, poses + n);
-    return Status::Ok();
-  }
-  const double* const u = job.surface != nullptr ? job.u.data() + first : nullptr;
-  const std::vector<double> s = TipArcLength(poses, n, {kMinStepMm, 0.0});
-  std::vector<bool> zone;
-  RETURN_IF_ERROR(FindZonesOfRun(job, first, s, a, c, report, &zone));
+  const size_t n = s.size();
+  RETURN_IF_ERROR(FindZonesOfRun(job, first, s, a, c, report, zone));
   std::vector<double> weights(n, 1.0);
   for (size_t i = 0; i < n; ++i) {
-    report->poses_in_zones += zone[i];
-    if (zone[i]) weights[i] = options.zone_weight;
+    report->poses_in_zones += (*zone)[i];
+    if ((*zone)[i]) weights[i] = options.zone_weight;
   }
   const double tol_rad = options.angle_tolerance_deg / kRadToDeg;
-  SmoothingSpline a_fit, c_fit;
   RETURN_IF_ERROR(
-      SmoothingSpline::FitEachWithinTolerance(s, {&a, &c}, weights, tol_rad, {&a_fit, &c_fit}));
+      SmoothingSpline::FitEachWithinTolerance(s, {&a, &c}, weights, tol_rad, {a_fit, c_fit}));
+  return Status::Ok();
+}
 
+// SmoothRun's second stage: the run's poses appended to `out`, those that
+// may move set on the fitted angles (pinned to their untouched neighbours),
+// with the tip on the surface when there is one.
+void AppendRunPoses(const SplineJob& job, size_t first, const std::vector<double>& s,
+                    const std::vector<double>& a, const std::vector<double>& c,
+                    const std::vector<bool>& zone, const SmoothingSpline& a_fit,
+                    const SmoothingSpline& c_fit, std::vector<ToolPose>* out,
+                    SplineSmootherReport* report) {
+  const SplineSmootherOptions& options = job.options;
+  const ToolPose* const poses = job.in.poses.data() + first;
+  const size_t n = s.size();
+  const double* const u = job.surface != nullptr ? job.u.data() + first : nullptr;
   // A pose may move when neither it nor a neighbour is a rapid end.
   auto movable = [&](size_t i) {
     return !IsPositioningMove(poses[i]) && (i + 1 >= n || !IsPositioningMove(poses[i + 1]));
@@ -274,6 +282,23 @@ Status SmoothRun(const SplineJob& job, size_t first, size_t end, std::vector<Too
     }
     out->push_back(pose_at(i, poses[i], s[i], u != nullptr ? u[i] : 0.0));
   }
+}
+
+Status SmoothRun(const SplineJob& job, size_t first, size_t end, std::vector<ToolPose>* out,
+                 SplineSmootherReport* report) {
+  std::vector<double> a, c;
+  RETURN_IF_ERROR(job.machine.AssignRotaryAngles(job.in, first, end, &a, &c));
+  const ToolPose* const poses = job.in.poses.data() + first;
+  const size_t n = end - first;
+  if (n < 4) {  // nothing to smooth
+    out->insert(out->end(), poses, poses + n);
+    return Status::Ok();
+  }
+  const std::vector<double> s = TipArcLength(poses, n, {kMinStepMm, 0.0});
+  std::vector<bool> zone;
+  SmoothingSpline a_fit, c_fit;
+  RETURN_IF_ERROR(FitRunAngles(job, first, s, a, c, report, &zone, &a_fit, &c_fit));
+  AppendRunPoses(job, first, s, a, c, zone, a_fit, c_fit, out, report);
   return Status::Ok();
 }
 
