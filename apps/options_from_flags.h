@@ -6,11 +6,15 @@
 #include "model/axis_metrics.h"
 #include "model/deviation.h"
 #include "model/link_moves.h"
+#include "model/path_generator.h"
+#include "model/pencil_path.h"
+#include "model/torus_cutter.h"
 #include "model/status.h"
 #include "solver/ceres_smoother.h"
 #include "solver/curve_output.h"
 #include "solver/feed_scheduler.h"
 #include "solver/spline_smoother.h"
+#include "solver/strip_path.h"
 
 namespace tpopt {
 
@@ -31,6 +35,15 @@ Status SmootherOptionsFromFlags(bool surface_free, SplineSmootherOptions* spline
 // --output_curve (bspline or not), --curve_step_mm and the --fit_* flags;
 // errors are usage errors.
 Status CurveOutputOptionsFromFlags(bool* bspline, CurveOutputOptions* options);
+
+// generate: --strategy, --cutter_radius (required) and the path's flags.
+Status FlankPathOptionsFromFlags(FlankPathOptions* options);
+
+// pencil: --ball_radius, --feed, --interpolation_period_ms.
+Status PencilOptionsFromFlags(PencilOptions* pencil);
+
+// stripwidth: --cutter=torus:R,r, --method and the posture's flags, --feed.
+Status StripPathOptionsFromFlags(TorusCutter* cutter, StripPathOptions* options);
 
 }  // namespace tpopt
 

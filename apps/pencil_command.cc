@@ -25,11 +25,7 @@ Status UsageFromFlags(PencilOptions* pencil, bool* bspline, CurveOutputOptions* 
   if (s.ok()) s = Require(FLAGS_curve, "curve");
   if (s.ok()) s = Require(FLAGS_out, "out");
   if (s.ok()) s = CheckGcodeFlags();
-  pencil->ball_radius_mm = FLAGS_ball_radius;
-  pencil->feed_mm_per_min = FLAGS_feed;
-  pencil->interpolation_period_s = FLAGS_interpolation_period_ms / 1000.0;
-  std::string why;
-  if (s.ok() && !pencil->IsValid(&why)) s = Status::Usage(why);
+  if (s.ok()) s = PencilOptionsFromFlags(pencil);
   if (s.ok()) s = CurveOutputOptionsFromFlags(bspline, curve);
   return s;
 }

@@ -23,56 +23,12 @@
 namespace tpopt {
 namespace {
 
-// "torus:R,r" in mm.
-Status ParseTorusFlag(const std::string& text, TorusCutter* cutter) {
-  const std::string prefix = "torus:";
-  const std::string usage = "--cutter=" + text + " must be torus:R,r (mm), e.g. torus:8,2";
-  if (text.compare(0, prefix.size(), prefix) != 0) return Status::Usage(usage);
-  const char* begin = text.c_str() + prefix.size();
-  char* end = nullptr;
-  cutter->radius_mm = std::strtod(begin, &end);
-  if (end == begin || *end != ',') return Status::Usage(usage);
-  const char* second = end + 1;
-  cutter->corner_radius_mm = std::strtod(second, &end);
-  if (end == second || *end != '\0') return Status::Usage(usage);
-  std::string why;
-  if (!cutter->IsValid(&why)) return Status::Usage("--cutter: " + why);
-  return Status::Ok();
-}
-
-Status MethodFromFlag(const std::string& name, PostureMethod* method) {
-  if (name == "sturz") {
-    *method = PostureMethod::kSturz;
-  } else if (name == "mpm") {
-    *method = PostureMethod::kMultiPoint;
-  } else if (name == "mpec") {
-    *method = PostureMethod::kMidPointErrorControl;
-  } else {
-    return Status::Usage("--method=" + name + " must be sturz, mpm or mpec");
-  }
-  return Status::Ok();
-}
-
 Status OptionsFromFlags(TorusCutter* cutter, StripPathOptions* options) {
   RETURN_IF_ERROR(Require(FLAGS_surface, "surface"));
   RETURN_IF_ERROR(Require(FLAGS_out, "out"));
   RETURN_IF_ERROR(Require(FLAGS_cutter, "cutter"));
   RETURN_IF_ERROR(CheckGcodeFlags());
-  RETURN_IF_ERROR(ParseTorusFlag(FLAGS_cutter, cutter));
-  RETURN_IF_ERROR(MethodFromFlag(FLAGS_method, &options->method));
-  PostureOptions& posture = options->posture;
-  posture.tolerance_mm = FLAGS_tolerance_mm;
-  posture.sturz_lead_rad = FLAGS_lead_deg * kDegToRad;
-  posture.min_lead_rad = FLAGS_min_lead_deg * kDegToRad;
-  posture.max_lead_rad = FLAGS_max_lead_deg * kDegToRad;
-  posture.max_tilt_rad = FLAGS_max_tilt_deg * kDegToRad;
-  options->poses = FLAGS_cc_points;
-  options->path_v = FLAGS_path_v;
-  options->samples_per_side = FLAGS_section_samples;
-  std::string why;
-  if (!options->IsValid(&why)) return Status::Usage(why);
-  if (!(FLAGS_feed > 0.0)) return Status::Usage("--feed must be > 0");
-  return Status::Ok();
+  return StripPathOptionsFromFlags(cutter, options);
 }
 
 nlohmann::json PointsJson(const std::vector<StripPoint>& points) {
