@@ -680,20 +680,21 @@ TEST(TpoptCliTest, EvaluateReportsTheTravelSmoothRefuses) {
 // The exit code follows from the status's code alone (apps/exit_codes.h):
 // a result the solver cannot make acceptable is exit 3, with nothing
 // written; an input the pipeline refuses before any solve is exit 1, naming
-// the file. The solver's case: the hypar's clean SPO path cannot be held
-// within 0.005 mm where it crosses the pole (safety_invariants_test,
-// ToleranceInvariantTest).
+// the file. The solver's case: no smooth path found for the hypar's clean
+// SPO path of 80 poses keeps every grid point within 0.002 mm (or the
+// input's own error), so after its four rounds the result is refused.
 TEST(TpoptCliTest, SmoothExitsThreeForASolverFailureAndOneForBadInput) {
   TempDir dir;
   const std::string cls = dir.File("spo.cls"), out = dir.File("out.cls");
   const std::string hypar = SourcePath("data/surfaces/hypar.json");
   const std::string machine = SourcePath("data/machines/jcde2022_ac.json");
-  auto r = RunCommand(Tpopt("generate --surface=" + hypar + " --cutter_radius=4 --out=" + cls));
+  auto r = RunCommand(
+      Tpopt("generate --surface=" + hypar + " --cutter_radius=4 --poses=80 --out=" + cls));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = RunCommand(Tpopt("smooth --quiet --mode=high_accuracy --tolerance_mm=0.005 --in=" + cls +
+  r = RunCommand(Tpopt("smooth --quiet --mode=high_accuracy --tolerance_mm=0.002 --in=" + cls +
                        " --surface=" + hypar + " --machine=" + machine + " --out=" + out));
   EXPECT_EQ(r.exit_code, 3) << r.output;
-  EXPECT_NE(r.output.find("beyond the tolerance of 0.005 mm"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("beyond the tolerance of 0.002 mm"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("nothing written"), std::string::npos) << r.output;
   EXPECT_FALSE(FileExists(out));
 
