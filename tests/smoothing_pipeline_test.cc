@@ -132,11 +132,6 @@ TEST(SmoothingPipelineTest, EachRunIsSmoothedWithItsOwnToolsCutter) {
       SmoothingResult result;
       const Status s =
           RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result);
-      if (!per_tool && !s.ok()) {
-        // Tool 2's run solved for an R 4 cutter: refused by the solver.
-        EXPECT_EQ(s.code(), StatusCode::kSolver) << s.message();
-        continue;
-      }
       ASSERT_TRUE(s.ok()) << s.message();
       const size_t second_out = SecondRun(result.output);
       ASSERT_LT(second_out, result.output.poses.size());
@@ -166,8 +161,13 @@ TEST(SmoothingPipelineTest, EachRunIsSmoothedWithItsOwnToolsCutter) {
                     per_tool ? "a cutter a tool" : "one cutter", t + 1, cutter.radius_mm,
                     worst_in, worst_out);
         if (!per_tool) {
-          if (t == 1) {
+          if (t == 1 && mode == SmoothingMode::kSpline) {
             EXPECT_GT(worst_out, 1.0);
+          } else if (t == 1) {
+            // Solved for an R 4 cutter, tool 2's run cannot be held to the
+            // tolerance: it goes back as programmed, not smoothed.
+            EXPECT_GE(result.runs_kept_as_input, 1);
+            EXPECT_EQ(worst_out, worst_in);
           }
         } else if (mode == SmoothingMode::kSpline) {
           EXPECT_LE(worst_out, worst_in) << "tool " << t + 1;
