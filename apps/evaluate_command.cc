@@ -42,7 +42,7 @@ int RunEvaluate(const Invocation& invocation) {
   if (s.ok()) s = LinkMoveOptionsFromFlags(&links);
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
-    return kExitUsage;
+    return ExitCodeOf(s);
   }
   s = CheckOutputFolders({FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
@@ -58,7 +58,7 @@ int RunEvaluate(const Invocation& invocation) {
   }
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
-    return kExitBadInput;
+    return ExitCodeOf(s);
   }
   nlohmann::json report = MetricsJson(metrics);
   report["tpopt_version"] = kTpoptVersion;
@@ -93,7 +93,7 @@ int RunEvaluate(const Invocation& invocation) {
   }
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
-    return kExitBadInput;
+    return ExitCodeOf(s);
   }
   if (!FLAGS_quiet) std::printf("%s", Summary(FLAGS_in, metrics).c_str());
   if (!travel.ok()) {

@@ -6,6 +6,7 @@
 #include "apps/exit_codes.h"
 #include "apps/flags.h"
 #include "apps/job_io.h"
+#include "apps/options_from_flags.h"
 #include "model/io/json_io.h"
 #include "model/path/path_generator.h"
 
@@ -16,28 +17,10 @@ int RunGenerate(const Invocation&) {
   if (s.ok()) s = Require(FLAGS_out, "out");
   if (s.ok()) s = CheckGcodeFlags();
   FlankPathOptions options;
-  if (FLAGS_strategy == "spo") {
-    options.strategy = FlankStrategy::kSinglePointOffset;
-  } else if (FLAGS_strategy == "dpo") {
-    options.strategy = FlankStrategy::kDoublePointOffset;
-  } else if (s.ok()) {
-    s = Status::Error("--strategy=" + FLAGS_strategy + " must be spo or dpo");
-  }
-  if (s.ok() && FLAGS_cutter_radius == 0.0) s = Status::Error("--cutter_radius is required");
-  options.cutter_radius_mm = FLAGS_cutter_radius;
-  options.poses = FLAGS_poses;
-  options.feed_mm_per_min = FLAGS_feed;
-  options.uv_distortion = FLAGS_uv_distortion;
-  options.distortion_center = FLAGS_distortion_center;
-  options.distortion_width = FLAGS_distortion_width;
-  options.axis_noise_deg = FLAGS_axis_noise_deg;
-  options.noise_seed = static_cast<unsigned>(FLAGS_noise_seed);
-  options.flute_length_mm = FLAGS_flute_length;
-  std::string why;
-  if (s.ok() && !options.IsValid(&why)) s = Status::Error(why);
+  if (s.ok()) s = FlankPathOptionsFromFlags(&options);
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt generate: %s\n", s.message().c_str());
-    return kExitUsage;
+    return ExitCodeOf(s);
   }
   RuledSurface surface;
   Machine machine;

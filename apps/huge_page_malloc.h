@@ -10,8 +10,8 @@
 // the kernel's THP mode "madvise", Debian's default), but it reads its tunables
 // only at start-up, from GLIBC_TUNABLES. So a program calls this first
 // thing in main() and, if the tunable is not yet set, restarts itself once
-// with it added to the environment. Measured with speed_benchmark, median
-// of 3: BM_Spline/1000000 903 -> 362 ms, BM_HighAccuracy/10000 746 -> 551 ms.
+// with it added to the environment. Large paths run faster with it (README,
+// "Figures behind the defaults").
 //
 // It leaves the process as it is, and returns, when: the user's
 // GLIBC_TUNABLES already names glibc.malloc.hugetlb (theirs is kept,

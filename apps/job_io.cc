@@ -89,8 +89,7 @@ Status LoadFreeformSurface(const std::string& path, FreeformSurface* surface,
   CadSurfaceInfo info;
   BSplineSurface bspline;
   double side_sign = 1.0;
-  Status s = ReadCadBSplineSurface(path, CadOptionsFromFlags(), &bspline, &side_sign, &info);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ReadCadBSplineSurface(path, CadOptionsFromFlags(), &bspline, &side_sign, &info));
   const std::string what = path + ": face " + std::to_string(info.face.index);
   if (bspline.degree_u() != 3 || bspline.degree_v() != 3) {
     return Status::Error(what + ": degree " + std::to_string(bspline.degree_u()) + " x " +
@@ -99,8 +98,8 @@ Status LoadFreeformSurface(const std::string& path, FreeformSurface* surface,
   const size_t slash = path.find_last_of('/');
   const std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1) + " face " +
                            std::to_string(info.face.index);
-  s = FreeformSurface::Create(name, bspline.knots_u(), bspline.knots_v(), PatchOf(bspline).poles,
-                              side_sign, what, surface);
+  Status s = FreeformSurface::Create(name, bspline.knots_u(), bspline.knots_v(),
+                                     PatchOf(bspline).poles, side_sign, what, surface);
   if (s.ok() && cad != nullptr) *cad = info;
   return s;
 }
@@ -146,8 +145,7 @@ Status SaveToolPath(const std::string& path, const Machine& machine, const ToolP
   const std::string ext = Extension(path);
   if (IsApt(ext)) {
     PartSetup setup;
-    Status s = PartSetupFromFlag(&setup);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(PartSetupFromFlag(&setup));
     const bool program = source != nullptr && tool_path.program != nullptr &&
                          tool_path.program->format == ProgramFormat::kApt;
     if (setup.IsIdentity()) {
@@ -189,7 +187,7 @@ Status InterpolationFromFlags(const std::string& path, const std::string& gcode_
     return Status::Ok();
   }
   if (ParseInterpolation(FLAGS_interpolation, interpolation)) return Status::Ok();
-  return Status::Error("--interpolation=" + FLAGS_interpolation + " must be tcp or joint");
+  return Status::Usage("--interpolation=" + FLAGS_interpolation + " must be tcp or joint");
 }
 
 Status PartSetupFromFlag(PartSetup* setup) {
@@ -200,7 +198,8 @@ Status PartSetupFromFlag(PartSetup* setup) {
 
 Status CheckPartSetupFlag() {
   PartSetup setup;
-  return PartSetupFromFlag(&setup);
+  const Status s = PartSetupFromFlag(&setup);
+  return s.ok() ? s : Status::Usage(s.message());
 }
 
 Status LoadMachine(const std::string& path, Machine* machine) {
@@ -248,8 +247,7 @@ Status ResolveCutter(const ToolPath& path, const RuledSurface* surface, double r
   } else if (!have_file) {
     c.flute_length_mm = DefaultFluteLengthMm(surface);
   }
-  Status s = c.Validate("cutter");
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(c.Validate("cutter"));
   *cutter = c;
   return Status::Ok();
 }
@@ -262,8 +260,7 @@ namespace {
 Status SurfaceIntoPathFrame(const ToolPath& path, const PartSetup& setup, RuledSurface* surface) {
   ProgramFrame frame;
   if (path.program != nullptr && path.program->format == ProgramFormat::kApt) {
-    Status s = ReadProgramFrame(*path.program, &frame);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadProgramFrame(*path.program, &frame));
   }
   if (frame.IsIdentity() && setup.IsIdentity()) return Status::Ok();
   // q_w = R_setup (R_frame^T (q - origin)) + t_setup.
@@ -286,16 +283,14 @@ Status SizeGcodeTools(const RuledSurface* surface, ToolPath* path) {
   }
   std::string table_path = FLAGS_tool_table;
   if (table_path.empty() && IsLinuxCncIni(FLAGS_machine)) {
-    Status s = LinuxCncIniToolTable(FLAGS_machine, &table_path);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(LinuxCncIniToolTable(FLAGS_machine, &table_path));
   }
   if (table_path.empty()) return Status::Ok();
   LinuxCncToolTable table;
-  Status s = ReadLinuxCncToolTable(table_path, &table);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ReadLinuxCncToolTable(table_path, &table));
   const double flute =
       FLAGS_flute_length != 0.0 ? FLAGS_flute_length : DefaultFluteLengthMm(surface);
-  s = SizeToolsFromTable(table, table_path, flute, path);
+  Status s = SizeToolsFromTable(table, table_path, flute, path);
   if (!s.ok()) return Status::Error(FLAGS_in + ": " + s.message());
   return Status::Ok();
 }
@@ -343,7 +338,7 @@ Status CheckGcodeFlags() {
        {std::pair<const char*, std::string>{"gcode_style", FLAGS_gcode_style},
         {"gcode_in_style", FLAGS_gcode_in_style}}) {
     if (value != "tcp" && value != "joint") {
-      return Status::Error(std::string("--") + name + "=" + value + " must be tcp or joint");
+      return Status::Usage(std::string("--") + name + "=" + value + " must be tcp or joint");
     }
   }
   return Status::Ok();
@@ -364,7 +359,7 @@ Status CheckOutputFolders(const std::vector<std::string>& paths) {
 
 Status Require(const std::string& value, const std::string& flag) {
   if (!value.empty()) return Status::Ok();
-  return Status::Error("--" + flag + " is required");
+  return Status::Usage("--" + flag + " is required");
 }
 
 }  // namespace tpopt

@@ -1,8 +1,11 @@
 #include "apps/options_from_flags.h"
 
+#include <cstdlib>
+
 #include <gflags/gflags.h>
 
 #include "apps/flags.h"
+#include "model/base/units.h"
 
 namespace tpopt {
 
@@ -15,14 +18,34 @@ Status MetricOptionsFromFlags(DeviationOptions* deviation, MotionOptions* motion
   }
   motion->default_feed_mm_per_min = FLAGS_feed;
   std::string why;
-  if (!deviation->IsValid(&why) || !motion->IsValid(&why)) return Status::Error(why);
+  if (!deviation->IsValid(&why) || !motion->IsValid(&why)) return Status::Usage(why);
+  return Status::Ok();
+}
+
+Status FeedScheduleOptionsFromFlags(FeedScheduleOptions* feed) {
+  feed->default_feed_mm_per_min = FLAGS_feed;
+  if (FLAGS_feed_mode != "lower" && FLAGS_feed_mode != "raise" &&
+      FLAGS_feed_mode != "keep_run_time") {
+    return Status::Usage("--feed_mode=" + FLAGS_feed_mode +
+                         " must be lower, raise or keep_run_time");
+  }
+  feed->mode = FLAGS_feed_mode == "raise"           ? FeedMode::kRaise
+               : FLAGS_feed_mode == "keep_run_time" ? FeedMode::kKeepRunTime
+                                                    : FeedMode::kLower;
+  feed->keep_input_peaks = FLAGS_raise_within_input_peaks;
+  feed->keep_run_time_window_mm = FLAGS_keep_run_time_window_mm;
+  if (FLAGS_max_feed_mm_per_min != 0.0) feed->max_feed_mm_per_min = FLAGS_max_feed_mm_per_min;
+  feed->max_feed_factor = FLAGS_max_feed_factor;
+  feed->max_feed_step = FLAGS_max_feed_step;
+  std::string why;
+  if (!feed->IsValid(&why)) return Status::Usage(why);
   return Status::Ok();
 }
 
 Status LinkMoveOptionsFromFlags(LinkMoveOptions* links) {
   links->feed_ratio = FLAGS_link_feed_ratio;
   std::string why;
-  if (!links->IsValid(&why)) return Status::Error(why);
+  if (!links->IsValid(&why)) return Status::Usage(why);
   return Status::Ok();
 }
 
@@ -74,14 +97,14 @@ Status SmootherOptionsFromFlags(bool surface_free, SplineSmootherOptions* spline
     ha->w_tip_second = UnlessDefault("w_tip_second", FLAGS_w_tip_second, defaults.w_tip_second);
   }
   std::string why;
-  if (!spline->IsValid(&why)) return Status::Error(why);
-  if (!ha->IsValid(&why)) return Status::Error(why);
+  if (!spline->IsValid(&why)) return Status::Usage(why);
+  if (!ha->IsValid(&why)) return Status::Usage(why);
   return Status::Ok();
 }
 
 Status CurveOutputOptionsFromFlags(bool* bspline, CurveOutputOptions* options) {
   if (FLAGS_output_curve != "points" && FLAGS_output_curve != "bspline") {
-    return Status::Error("--output_curve=" + FLAGS_output_curve + " must be points or bspline");
+    return Status::Usage("--output_curve=" + FLAGS_output_curve + " must be points or bspline");
   }
   *bspline = FLAGS_output_curve == "bspline";
   const std::string& p = FLAGS_fit_parametrization;
@@ -94,11 +117,11 @@ Status CurveOutputOptionsFromFlags(bool* bspline, CurveOutputOptions* options) {
   } else if (p == "uniform") {
     options->fit.parametrization = Parametrization::kUniform;
   } else {
-    return Status::Error("--fit_parametrization=" + p +
+    return Status::Usage("--fit_parametrization=" + p +
                          " must be approximate_arc, chord, centripetal or uniform");
   }
   if (FLAGS_fit_chord_height != "fixed" && FLAGS_fit_chord_height != "neighbours") {
-    return Status::Error("--fit_chord_height=" + FLAGS_fit_chord_height +
+    return Status::Usage("--fit_chord_height=" + FLAGS_fit_chord_height +
                          " must be fixed or neighbours");
   }
   options->fit.chord_height =
@@ -106,7 +129,91 @@ Status CurveOutputOptionsFromFlags(bool* bspline, CurveOutputOptions* options) {
   options->fit.chord_height_mm = FLAGS_fit_chord_height_mm;
   options->sample_step_mm = FLAGS_curve_step_mm;
   std::string why;
-  if (!options->IsValid(&why)) return Status::Error(why);
+  if (!options->IsValid(&why)) return Status::Usage(why);
+  return Status::Ok();
+}
+
+Status FlankPathOptionsFromFlags(FlankPathOptions* options) {
+  if (FLAGS_strategy == "spo") {
+    options->strategy = FlankStrategy::kSinglePointOffset;
+  } else if (FLAGS_strategy == "dpo") {
+    options->strategy = FlankStrategy::kDoublePointOffset;
+  } else {
+    return Status::Usage("--strategy=" + FLAGS_strategy + " must be spo or dpo");
+  }
+  if (FLAGS_cutter_radius == 0.0) return Status::Usage("--cutter_radius is required");
+  options->cutter_radius_mm = FLAGS_cutter_radius;
+  options->poses = FLAGS_poses;
+  options->feed_mm_per_min = FLAGS_feed;
+  options->uv_distortion = FLAGS_uv_distortion;
+  options->distortion_center = FLAGS_distortion_center;
+  options->distortion_width = FLAGS_distortion_width;
+  options->axis_noise_deg = FLAGS_axis_noise_deg;
+  options->noise_seed = static_cast<unsigned>(FLAGS_noise_seed);
+  options->flute_length_mm = FLAGS_flute_length;
+  std::string why;
+  if (!options->IsValid(&why)) return Status::Usage(why);
+  return Status::Ok();
+}
+
+Status PencilOptionsFromFlags(PencilOptions* pencil) {
+  pencil->ball_radius_mm = FLAGS_ball_radius;
+  pencil->feed_mm_per_min = FLAGS_feed;
+  pencil->interpolation_period_s = FLAGS_interpolation_period_ms / 1000.0;
+  std::string why;
+  if (!pencil->IsValid(&why)) return Status::Usage(why);
+  return Status::Ok();
+}
+
+namespace {
+
+// "torus:R,r" in mm.
+Status ParseTorusFlag(const std::string& text, TorusCutter* cutter) {
+  const std::string prefix = "torus:";
+  const std::string usage = "--cutter=" + text + " must be torus:R,r (mm), e.g. torus:8,2";
+  if (text.compare(0, prefix.size(), prefix) != 0) return Status::Usage(usage);
+  const char* begin = text.c_str() + prefix.size();
+  char* end = nullptr;
+  cutter->radius_mm = std::strtod(begin, &end);
+  if (end == begin || *end != ',') return Status::Usage(usage);
+  const char* second = end + 1;
+  cutter->corner_radius_mm = std::strtod(second, &end);
+  if (end == second || *end != '\0') return Status::Usage(usage);
+  std::string why;
+  if (!cutter->IsValid(&why)) return Status::Usage("--cutter: " + why);
+  return Status::Ok();
+}
+
+Status MethodFromFlag(const std::string& name, PostureMethod* method) {
+  if (name == "sturz") {
+    *method = PostureMethod::kSturz;
+  } else if (name == "mpm") {
+    *method = PostureMethod::kMultiPoint;
+  } else if (name == "mpec") {
+    *method = PostureMethod::kMidPointErrorControl;
+  } else {
+    return Status::Usage("--method=" + name + " must be sturz, mpm or mpec");
+  }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status StripPathOptionsFromFlags(TorusCutter* cutter, StripPathOptions* options) {
+  RETURN_IF_ERROR(ParseTorusFlag(FLAGS_cutter, cutter));
+  RETURN_IF_ERROR(MethodFromFlag(FLAGS_method, &options->method));
+  PostureOptions& posture = options->posture;
+  posture.tolerance_mm = FLAGS_tolerance_mm;
+  posture.sturz_lead_rad = FLAGS_lead_deg * kDegToRad;
+  posture.min_lead_rad = FLAGS_min_lead_deg * kDegToRad;
+  posture.max_lead_rad = FLAGS_max_lead_deg * kDegToRad;
+  posture.max_tilt_rad = FLAGS_max_tilt_deg * kDegToRad;
+  options->poses = FLAGS_cc_points;
+  options->path_v = FLAGS_path_v;
+  options->samples_per_side = FLAGS_section_samples;
+  std::string why;
+  if (!options->IsValid(&why)) return Status::Usage(why);
+  if (!(FLAGS_feed > 0.0)) return Status::Usage("--feed must be > 0");
   return Status::Ok();
 }
 

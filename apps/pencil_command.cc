@@ -15,9 +15,10 @@
 namespace tpopt {
 namespace {
 
-int Fail(int code, const std::string& message) {
+// Prints `message` and returns the exit code of `status` (apps/exit_codes.h).
+int Fail(const Status& status, const std::string& message) {
   std::fprintf(stderr, "tpopt pencil: %s\n", message.c_str());
-  return code;
+  return ExitCodeOf(status);
 }
 
 Status UsageFromFlags(PencilOptions* pencil, bool* bspline, CurveOutputOptions* curve) {
@@ -25,11 +26,7 @@ Status UsageFromFlags(PencilOptions* pencil, bool* bspline, CurveOutputOptions* 
   if (s.ok()) s = Require(FLAGS_curve, "curve");
   if (s.ok()) s = Require(FLAGS_out, "out");
   if (s.ok()) s = CheckGcodeFlags();
-  pencil->ball_radius_mm = FLAGS_ball_radius;
-  pencil->feed_mm_per_min = FLAGS_feed;
-  pencil->interpolation_period_s = FLAGS_interpolation_period_ms / 1000.0;
-  std::string why;
-  if (s.ok() && !pencil->IsValid(&why)) s = Status::Error(why);
+  if (s.ok()) s = PencilOptionsFromFlags(pencil);
   if (s.ok()) s = CurveOutputOptionsFromFlags(bspline, curve);
   return s;
 }
@@ -61,7 +58,7 @@ int RunPencil(const Invocation& invocation) {
   CurveOutputOptions curve_options;
   bool bspline = false;
   Status s = UsageFromFlags(&pencil, &bspline, &curve_options);
-  if (!s.ok()) return Fail(kExitUsage, s.message());
+  if (!s.ok()) return Fail(s, s.message());
 
   PencilJob job;
   Machine machine;
@@ -69,13 +66,13 @@ int RunPencil(const Invocation& invocation) {
   s = LoadBSplineSurface(FLAGS_surface, &job.surface, &cad);
   if (s.ok()) s = CompletePencilJob(FLAGS_curve, pencil.ball_radius_mm, &job);
   if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
-  if (!s.ok()) return Fail(kExitBadInput, s.message());
+  if (!s.ok()) return Fail(s, s.message());
   std::vector<PencilRun> runs;
   s = GeneratePencilRuns(job.geometry, job.guides, pencil, &runs);
-  if (!s.ok()) return Fail(kExitBadInput, FLAGS_curve + ": " + s.message());
+  if (!s.ok()) return Fail(s, FLAGS_curve + ": " + s.message());
   PencilFitResult fit;
   s = FitPencilRuns(job.geometry, job.guides, runs, pencil.ball_radius_mm, curve_options, bspline, &fit);
-  if (!s.ok()) return Fail(kExitBadInput, FLAGS_curve + ": " + s.message());
+  if (!s.ok()) return Fail(s, FLAGS_curve + ": " + s.message());
 
   fit.path.title = "tpopt pencil of " + FLAGS_curve + " on " + FLAGS_surface +
                    " (ball-end, tips = ball centre - radius along the axis)";
@@ -89,7 +86,7 @@ int RunPencil(const Invocation& invocation) {
     if (cad) report["surface_cad"] = CadInfoJson(*cad);
     s = WriteReport(FLAGS_report, report);
   }
-  if (!s.ok()) return Fail(kExitBadInput, s.message());
+  if (!s.ok()) return Fail(s, s.message());
   if (fit.folded_points > 0) {
     std::fprintf(stderr,
                  "warning: at %zu CL points the surface bends tighter than the %.3f mm ball along "

@@ -11,7 +11,7 @@ namespace tpopt {
 Status CheckPictureFlags() {
   VtkFormat format;
   if (!FLAGS_vtk.empty() && !VtkFormatOf(FLAGS_vtk, &format)) {
-    return Status::Error("--vtk=" + FLAGS_vtk + " must end in .vtp (VTK XML) or .vtk (legacy)");
+    return Status::Usage("--vtk=" + FLAGS_vtk + " must end in .vtp (VTK XML) or .vtk (legacy)");
   }
   return Status::Ok();
 }

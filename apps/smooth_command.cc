@@ -17,9 +17,10 @@
 namespace tpopt {
 namespace {
 
-int Fail(int code, const std::string& message) {
+// Prints `message` and returns the exit code of `status` (apps/exit_codes.h).
+int Fail(const Status& status, const std::string& message) {
   std::fprintf(stderr, "tpopt smooth: %s\n", message.c_str());
-  return code;
+  return ExitCodeOf(status);
 }
 
 // Shows the pipeline's stages and Ceres' iterations on `progress`; null
@@ -109,104 +110,101 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
 // --mode=none: the input as the output, evaluated once, so that a program
 // goes out through the same reader and writer as a smoothed one.
 Status PassThrough(const Job& job, const SmoothingSettings& settings, SmoothingResult* result) {
-  Status s = EvaluatePath(job.path, job.machine, job.surface_or_null(), job.cutter,
-                          settings.deviation, settings.motion, &result->input_metrics);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(EvaluatePath(job.path, job.machine, job.surface_or_null(), job.cutter,
+                               settings.deviation, settings.motion, &result->input_metrics));
   result->output = job.path;
   result->output_at_input_feed = result->input_metrics;
   result->output_metrics = result->input_metrics;
   return Status::Ok();
 }
 
-}  // namespace
-
-int RunSmooth(const Invocation& invocation) {
-  Status s = Require(FLAGS_in, "in");
-  if (s.ok()) s = Require(FLAGS_out, "out");
-  if (s.ok()) s = CheckGcodeFlags();
-  if (s.ok()) s = CheckPartSetupFlag();
-  if (s.ok()) s = CheckPictureFlags();
-  if (s.ok() && FLAGS_mode != "spline" && FLAGS_mode != "high_accuracy" && FLAGS_mode != "none") {
-    s = Status::Error("--mode=" + FLAGS_mode + " must be spline, high_accuracy or none");
-  }
+// What the flags ask of one `tpopt smooth` run.
+struct SmoothRequest {
   SmoothingSettings settings;
+  LinkMoveOptions links;
+  bool bspline_output = false;
+  CurveOutputOptions curve_options;
+};
+
+// Every flag of the run, checked in order; a failure is a usage error.
+Status RequestFromFlags(SmoothRequest* request) {
+  SmoothingSettings& settings = request->settings;
+  RETURN_IF_ERROR(Require(FLAGS_in, "in"));
+  RETURN_IF_ERROR(Require(FLAGS_out, "out"));
+  RETURN_IF_ERROR(CheckGcodeFlags());
+  RETURN_IF_ERROR(CheckPartSetupFlag());
+  RETURN_IF_ERROR(CheckPictureFlags());
+  if (FLAGS_mode != "spline" && FLAGS_mode != "high_accuracy" && FLAGS_mode != "none") {
+    return Status::Usage("--mode=" + FLAGS_mode + " must be spline, high_accuracy or none");
+  }
   settings.mode = FLAGS_mode == "spline" ? SmoothingMode::kSpline : SmoothingMode::kHighAccuracy;
   settings.schedule_feed = FLAGS_schedule_feed;
   settings.accept_over_tolerance = FLAGS_accept_over_tolerance;
   settings.keep_runs_no_worse = FLAGS_keep_runs_no_worse;
   settings.judge_on_input_range = FLAGS_judge_on_input_range;
   settings.resample_step_mm = FLAGS_resample_step_mm;
-  settings.feed.default_feed_mm_per_min = FLAGS_feed;
-  if (s.ok() && FLAGS_feed_mode != "lower" && FLAGS_feed_mode != "raise" &&
-      FLAGS_feed_mode != "keep_run_time") {
-    s = Status::Error("--feed_mode=" + FLAGS_feed_mode + " must be lower, raise or keep_run_time");
+  RETURN_IF_ERROR(FeedScheduleOptionsFromFlags(&settings.feed));
+  RETURN_IF_ERROR(MetricOptionsFromFlags(&settings.deviation, &settings.motion));
+  RETURN_IF_ERROR(
+      InterpolationFromFlags(FLAGS_out, FLAGS_gcode_style, &settings.deviation.interpolation));
+  RETURN_IF_ERROR(LinkMoveOptionsFromFlags(&request->links));
+  RETURN_IF_ERROR(
+      SmootherOptionsFromFlags(FLAGS_surface.empty(), &settings.spline, &settings.high_accuracy));
+  if (!(FLAGS_resample_step_mm >= 0)) {
+    return Status::Usage("--resample_step_mm=" + std::to_string(FLAGS_resample_step_mm) +
+                         " must be >= 0");
   }
-  settings.feed.mode = FLAGS_feed_mode == "raise"           ? FeedMode::kRaise
-                       : FLAGS_feed_mode == "keep_run_time" ? FeedMode::kKeepRunTime
-                                                            : FeedMode::kLower;
-  settings.feed.keep_input_peaks = FLAGS_raise_within_input_peaks;
-  settings.feed.keep_run_time_window_mm = FLAGS_keep_run_time_window_mm;
-  if (FLAGS_max_feed_mm_per_min != 0.0) {
-    settings.feed.max_feed_mm_per_min = FLAGS_max_feed_mm_per_min;
-  }
-  settings.feed.max_feed_factor = FLAGS_max_feed_factor;
-  settings.feed.max_feed_step = FLAGS_max_feed_step;
-  std::string feed_why;
-  if (s.ok() && !settings.feed.IsValid(&feed_why)) {
-    s = Status::Error(feed_why);
-  }
-  if (s.ok()) s = MetricOptionsFromFlags(&settings.deviation, &settings.motion);
-  if (s.ok()) {
-    s = InterpolationFromFlags(FLAGS_out, FLAGS_gcode_style, &settings.deviation.interpolation);
-  }
-  LinkMoveOptions links;
-  if (s.ok()) s = LinkMoveOptionsFromFlags(&links);
-  if (s.ok()) s = SmootherOptionsFromFlags(FLAGS_surface.empty(), &settings.spline,
-                                              &settings.high_accuracy);
-  if (s.ok() && !(FLAGS_resample_step_mm >= 0)) {
-    s = Status::Error("--resample_step_mm=" + std::to_string(FLAGS_resample_step_mm) +
-                      " must be >= 0");
-  }
-  bool bspline_output = false;
-  CurveOutputOptions curve_options;
-  if (s.ok()) s = CurveOutputOptionsFromFlags(&bspline_output, &curve_options);
-  if (!s.ok()) return Fail(kExitUsage, s.message());
+  return CurveOutputOptionsFromFlags(&request->bspline_output, &request->curve_options);
+}
 
-  s = CheckOutputFolders({FLAGS_out, FLAGS_report, FLAGS_html, FLAGS_vtk});
-  Job job;
-  if (s.ok()) s = LoadJob(FLAGS_quiet, links, &job);
-  if (!s.ok()) return Fail(kExitBadInput, s.message());
-  settings.deviation.cutter_per_tool = job.cutter_per_tool;
-  SmoothingResult result;
-  SmoothingFailure failure = SmoothingFailure::kNone;
+// The job smoothed (or passed through, --mode=none) into `result`, with the
+// progress display while it runs.
+Status SmoothJob(const Job& job, SmoothingSettings* settings, SmoothingResult* result) {
+  Status s;
   if (FLAGS_mode == "none") {
-    s = PassThrough(job, settings, &result);
+    s = PassThrough(job, *settings, result);
   } else {
     // Gone before the summary is printed, so its line never splits it.
     ProgressDisplay progress(stderr, "tpopt smooth", !FLAGS_quiet, FLAGS_progress_after_s);
-    ReportProgressTo(&progress, &settings);
-    s = RunSmoothing({&job.path, job.surface_or_null(), &job.cutter, &job.machine}, settings,
-                     &result, &failure);
+    ReportProgressTo(&progress, settings);
+    s = RunSmoothing({&job.path, job.surface_or_null(), &job.cutter, &job.machine}, *settings,
+                     result);
   }
-  ReportProgressTo(nullptr, &settings);
+  ReportProgressTo(nullptr, settings);
+  return s;
+}
+
+}  // namespace
+
+int RunSmooth(const Invocation& invocation) {
+  SmoothRequest request;
+  Status s = RequestFromFlags(&request);
+  if (!s.ok()) return Fail(s, s.message());
+  SmoothingSettings& settings = request.settings;
+
+  s = CheckOutputFolders({FLAGS_out, FLAGS_report, FLAGS_html, FLAGS_vtk});
+  Job job;
+  if (s.ok()) s = LoadJob(FLAGS_quiet, request.links, &job);
+  if (!s.ok()) return Fail(s, s.message());
+  settings.deviation.cutter_per_tool = job.cutter_per_tool;
+  SmoothingResult result;
+  s = SmoothJob(job, &settings, &result);
   if (!s.ok()) {
-    if (failure == SmoothingFailure::kSolver) {
-      return Fail(kExitSolverFailure, s.message() + "; nothing written");
-    }
-    return Fail(kExitBadInput, FLAGS_in + ": " + s.message());
+    return Fail(s, s.code() == StatusCode::kSolver ? s.message() + "; nothing written"
+                                                   : FLAGS_in + ": " + s.message());
   }
   result.output.title = "tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in;
   ToolPath written = result.output;
   std::vector<AptCurveSpan> spans;
-  if (bspline_output) {
-    s = FitToolPathCurves(result.output, curve_options, &written, &spans);
-    if (!s.ok()) return Fail(kExitBadInput, FLAGS_out + ": the B-spline fit failed: " + s.message());
+  if (request.bspline_output) {
+    s = FitToolPathCurves(result.output, request.curve_options, &written, &spans);
+    if (!s.ok()) return Fail(s, FLAGS_out + ": the B-spline fit failed: " + s.message());
   }
   s = WriteOutputs(invocation, job, result, settings.deviation.interpolation, written, spans);
-  if (!s.ok()) return Fail(kExitBadInput, s.message());
+  if (!s.ok()) return Fail(s, s.message());
   if (!FLAGS_quiet) {
     PrintSummary(settings, result);
-    if (bspline_output) {
+    if (request.bspline_output) {
       std::printf("  B-spline output: %zu cubic spans, %zu poses written (points on the spans)\n",
                   spans.size(), written.poses.size());
     }

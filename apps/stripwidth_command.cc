@@ -23,57 +23,12 @@
 namespace tpopt {
 namespace {
 
-// "torus:R,r" in mm.
-Status ParseTorusFlag(const std::string& text, TorusCutter* cutter) {
-  const std::string prefix = "torus:";
-  const std::string usage = "--cutter=" + text + " must be torus:R,r (mm), e.g. torus:8,2";
-  if (text.compare(0, prefix.size(), prefix) != 0) return Status::Error(usage);
-  const char* begin = text.c_str() + prefix.size();
-  char* end = nullptr;
-  cutter->radius_mm = std::strtod(begin, &end);
-  if (end == begin || *end != ',') return Status::Error(usage);
-  const char* second = end + 1;
-  cutter->corner_radius_mm = std::strtod(second, &end);
-  if (end == second || *end != '\0') return Status::Error(usage);
-  std::string why;
-  if (!cutter->IsValid(&why)) return Status::Error("--cutter: " + why);
-  return Status::Ok();
-}
-
-Status MethodFromFlag(const std::string& name, PostureMethod* method) {
-  if (name == "sturz") {
-    *method = PostureMethod::kSturz;
-  } else if (name == "mpm") {
-    *method = PostureMethod::kMultiPoint;
-  } else if (name == "mpec") {
-    *method = PostureMethod::kMidPointErrorControl;
-  } else {
-    return Status::Error("--method=" + name + " must be sturz, mpm or mpec");
-  }
-  return Status::Ok();
-}
-
 Status OptionsFromFlags(TorusCutter* cutter, StripPathOptions* options) {
-  Status s = Require(FLAGS_surface, "surface");
-  if (s.ok()) s = Require(FLAGS_out, "out");
-  if (s.ok()) s = Require(FLAGS_cutter, "cutter");
-  if (s.ok()) s = CheckGcodeFlags();
-  if (s.ok()) s = ParseTorusFlag(FLAGS_cutter, cutter);
-  if (s.ok()) s = MethodFromFlag(FLAGS_method, &options->method);
-  if (!s.ok()) return s;
-  PostureOptions& posture = options->posture;
-  posture.tolerance_mm = FLAGS_tolerance_mm;
-  posture.sturz_lead_rad = FLAGS_lead_deg * kDegToRad;
-  posture.min_lead_rad = FLAGS_min_lead_deg * kDegToRad;
-  posture.max_lead_rad = FLAGS_max_lead_deg * kDegToRad;
-  posture.max_tilt_rad = FLAGS_max_tilt_deg * kDegToRad;
-  options->poses = FLAGS_cc_points;
-  options->path_v = FLAGS_path_v;
-  options->samples_per_side = FLAGS_section_samples;
-  std::string why;
-  if (!options->IsValid(&why)) return Status::Error(why);
-  if (!(FLAGS_feed > 0.0)) return Status::Error("--feed must be > 0");
-  return Status::Ok();
+  RETURN_IF_ERROR(Require(FLAGS_surface, "surface"));
+  RETURN_IF_ERROR(Require(FLAGS_out, "out"));
+  RETURN_IF_ERROR(Require(FLAGS_cutter, "cutter"));
+  RETURN_IF_ERROR(CheckGcodeFlags());
+  return StripPathOptionsFromFlags(cutter, options);
 }
 
 nlohmann::json PointsJson(const std::vector<StripPoint>& points) {
@@ -107,6 +62,77 @@ nlohmann::json StripMetricsJson(const StripPathMetrics& m) {
           {"cc_second_difference_max_mm", m.cc_second_difference_max_mm}};
 }
 
+// The pass planned on the surface, as CC points and as the CL path written,
+// with the machine's motion along it and the time the planning took.
+struct StripRun {
+  FreeformSurface surface;
+  Machine machine;
+  std::optional<CadSurfaceInfo> cad;
+  std::vector<StripPoint> points;
+  ToolPath path;
+  PathMetrics motion;
+  double solve_s = 0.0;
+};
+
+// Loads the surface and the machine, plans the pass and measures its
+// motion; `run->path` is made even on failure (as the report's title needs
+// the surface's name).
+Status PlanStripRun(const TorusCutter& cutter, const StripPathOptions& options,
+                    const DeviationOptions& deviation_options, const MotionOptions& motion_options,
+                    StripRun* run) {
+  const auto start = std::chrono::steady_clock::now();
+  Status s = LoadFreeformSurface(FLAGS_surface, &run->surface, &run->cad);
+  if (s.ok()) s = LoadMachine(FLAGS_machine, &run->machine);
+  if (s.ok()) {
+    s = PlanStripPath(run->surface, cutter, options, &run->points);
+    if (!s.ok()) s = Status::Error(FLAGS_surface + ": " + s.message());
+  }
+  run->solve_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run->path = StripPathToToolPath(
+      run->points, cutter, FLAGS_feed,
+      "tpopt stripwidth " + FLAGS_method + " torus R " + std::to_string(cutter.radius_mm) +
+          " r " + std::to_string(cutter.corner_radius_mm) + " on " + run->surface.name());
+  if (s.ok()) {
+    // Motion on the machine only: the deviation evaluator is for ruled
+    // surfaces, and the strip deviation is measured above.
+    Cutter as_written = *run->path.cutter;
+    s = EvaluatePath(run->path, run->machine, nullptr, as_written, deviation_options,
+                     motion_options, &run->motion);
+  }
+  return s;
+}
+
+nlohmann::json StripReportJson(const Invocation& invocation, const TorusCutter& cutter,
+                               const StripPathOptions& options, const StripRun& run,
+                               const StripPathMetrics& strips) {
+  nlohmann::json report = MetricsJson(run.motion);
+  report["command"] = invocation.command_line;
+  report["method"] = FLAGS_method;
+  report["surface"] = FLAGS_surface;
+  if (run.cad) report["surface_cad"] = CadInfoJson(*run.cad);
+  report["machine"] = run.machine.name;
+  report["cutter"] = {{"radius_mm", cutter.radius_mm},
+                      {"corner_radius_mm", cutter.corner_radius_mm}};
+  report["tolerance_mm"] = options.posture.tolerance_mm;
+  report["strips"] = StripMetricsJson(strips);
+  report["cc_points"] = PointsJson(run.points);
+  report["solve_time_s"] = run.solve_s;
+  return report;
+}
+
+void PrintStripSummary(const StripRun& run, const StripPathMetrics& strips) {
+  const auto& a = run.motion.motion.axes[kA];
+  const auto& c = run.motion.motion.axes[kC];
+  std::printf(
+      "%s: %zu CC points, strip width mean %.4f min %.4f mm, worst deviation %.5f mm, "
+      "tool-centre fluctuation max %.5f rms %.5f mm, peak d2A/ds2 %.5f d2C/ds2 %.5f deg/mm^2, "
+      "%.2f s\n",
+      FLAGS_method.c_str(), run.points.size(), strips.mean_width_mm, strips.min_width_mm,
+      strips.worst_deviation_mm, strips.centre_fluctuation_max_mm,
+      strips.centre_fluctuation_rms_mm, a.peak_second_derivative_per_mm2 / kDegToRad,
+      c.peak_second_derivative_per_mm2 / kDegToRad, run.solve_s);
+}
+
 }  // namespace
 
 int RunStripWidth(const Invocation& invocation) {
@@ -118,66 +144,20 @@ int RunStripWidth(const Invocation& invocation) {
   if (s.ok()) s = MetricOptionsFromFlags(&deviation_options, &motion_options);
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt stripwidth: %s\n", s.message().c_str());
-    return kExitUsage;
+    return ExitCodeOf(s);
   }
-  FreeformSurface surface;
-  Machine machine;
-  std::vector<StripPoint> points;
-  const auto start = std::chrono::steady_clock::now();
-  std::optional<CadSurfaceInfo> cad;
-  s = LoadFreeformSurface(FLAGS_surface, &surface, &cad);
-  if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
-  if (s.ok()) {
-    s = PlanStripPath(surface, cutter, options, &points);
-    if (!s.ok()) s = Status::Error(FLAGS_surface + ": " + s.message());
-  }
-  const double solve_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const ToolPath path = StripPathToToolPath(
-      points, cutter, FLAGS_feed,
-      "tpopt stripwidth " + FLAGS_method + " torus R " + std::to_string(cutter.radius_mm) +
-          " r " + std::to_string(cutter.corner_radius_mm) + " on " + surface.name());
-  PathMetrics motion;
-  if (s.ok()) {
-    // Motion on the machine only: the deviation evaluator is for ruled
-    // surfaces, and the strip deviation is measured above.
-    Cutter as_written = *path.cutter;
-    s = EvaluatePath(path, machine, nullptr, as_written, deviation_options, motion_options,
-                     &motion);
-  }
-  if (s.ok()) s = SaveToolPath(FLAGS_out, machine, path);
-  const StripPathMetrics strips = s.ok() ? MeasureStripPath(points) : StripPathMetrics();
+  StripRun run;
+  s = PlanStripRun(cutter, options, deviation_options, motion_options, &run);
+  if (s.ok()) s = SaveToolPath(FLAGS_out, run.machine, run.path);
+  const StripPathMetrics strips = s.ok() ? MeasureStripPath(run.points) : StripPathMetrics();
   if (s.ok() && !FLAGS_report.empty()) {
-    nlohmann::json report = MetricsJson(motion);
-    report["command"] = invocation.command_line;
-    report["method"] = FLAGS_method;
-    report["surface"] = FLAGS_surface;
-    if (cad) report["surface_cad"] = CadInfoJson(*cad);
-    report["machine"] = machine.name;
-    report["cutter"] = {{"radius_mm", cutter.radius_mm},
-                        {"corner_radius_mm", cutter.corner_radius_mm}};
-    report["tolerance_mm"] = options.posture.tolerance_mm;
-    report["strips"] = StripMetricsJson(strips);
-    report["cc_points"] = PointsJson(points);
-    report["solve_time_s"] = solve_s;
-    s = WriteReport(FLAGS_report, report);
+    s = WriteReport(FLAGS_report, StripReportJson(invocation, cutter, options, run, strips));
   }
   if (!s.ok()) {
     std::fprintf(stderr, "tpopt stripwidth: %s\n", s.message().c_str());
-    return kExitBadInput;
+    return ExitCodeOf(s);
   }
-  if (!FLAGS_quiet) {
-    const auto& a = motion.motion.axes[kA];
-    const auto& c = motion.motion.axes[kC];
-    std::printf(
-        "%s: %zu CC points, strip width mean %.4f min %.4f mm, worst deviation %.5f mm, "
-        "tool-centre fluctuation max %.5f rms %.5f mm, peak d2A/ds2 %.5f d2C/ds2 %.5f deg/mm^2, "
-        "%.2f s\n",
-        FLAGS_method.c_str(), points.size(), strips.mean_width_mm, strips.min_width_mm,
-        strips.worst_deviation_mm, strips.centre_fluctuation_max_mm,
-        strips.centre_fluctuation_rms_mm, a.peak_second_derivative_per_mm2 / kDegToRad,
-        c.peak_second_derivative_per_mm2 / kDegToRad, solve_s);
-  }
+  if (!FLAGS_quiet) PrintStripSummary(run, strips);
   return kExitSuccess;
 }
 

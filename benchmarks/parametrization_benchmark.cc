@@ -73,8 +73,7 @@ Dataset Ellipse() {
 
 Status Pencil(const PencilJob& job, std::vector<PencilRun>* runs, Dataset* d) {
   PencilOptions options;  // 3000 mm/min, 8 ms, 3 mm ball
-  Status s = GeneratePencilRuns(job.geometry, job.guides, options, runs);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(GeneratePencilRuns(job.geometry, job.guides, options, runs));
   d->name = "pencil flower, 0.4 mm (seed)";
   for (const PencilPoint& p : (*runs)[0].points) {
     d->points.push_back(p.cl);

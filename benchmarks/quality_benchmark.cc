@@ -88,10 +88,8 @@ void RunBothModes(const ToolPath& input, const RuledSurface* surface, const Cutt
     SmoothingSettings settings = preset;
     settings.mode = mode;
     SmoothingResult result;
-    SmoothingFailure failure;
     const auto start = std::chrono::steady_clock::now();
-    const Status s = RunSmoothing({&input, surface, &cutter, &machine}, settings, &result,
-                                  &failure);
+    const Status s = RunSmoothing({&input, surface, &cutter, &machine}, settings, &result);
     const double wall_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     Row row = base;

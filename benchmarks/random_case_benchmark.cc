@@ -73,10 +73,9 @@ Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
   settings.deviation.interpolation = config.interpolation;
   settings.judge_on_input_range = true;
   SmoothingResult result;
-  SmoothingFailure failure;
   const auto start = std::chrono::steady_clock::now();
   const Status s =
-      RunSmoothing({&c.cam_path, &c.surface, &c.cutter, &c.machine}, settings, &result, &failure);
+      RunSmoothing({&c.cam_path, &c.surface, &c.cutter, &c.machine}, settings, &result);
   Row row;
   row.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   row.seed = c.seed;
@@ -84,7 +83,7 @@ Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
   row.config_mode = config.ModeName();
   row.interpolation = InterpolationName(config.interpolation);
   if (!s.ok()) {
-    row.outcome = failure == SmoothingFailure::kSolver ? "refused" : "failed";
+    row.outcome = s.code() == StatusCode::kSolver ? "refused" : "failed";
     row.message = s.message();
     if (detail) {
       char numbers[200];

@@ -86,9 +86,7 @@ TEST_P(HighAccuracyTwistedSurfacesTest, NoGougeNoFlipAndInsideTheTravel) {
   SmoothingSettings settings;
   settings.mode = SmoothingMode::kHighAccuracy;
   SmoothingResult result;
-  SmoothingFailure failure = SmoothingFailure::kNone;
-  const Status s = RunSmoothing({&cam, &surface, &cutter, &sim}, settings,
-                                &result, &failure);
+  const Status s = RunSmoothing({&cam, &surface, &cutter, &sim}, settings, &result);
   ASSERT_TRUE(s.ok()) << s.message();
   const ToolPath& out = result.output;
   ASSERT_EQ(out.poses.size(), cam.poses.size());

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -101,6 +102,72 @@ TEST(PoseSplinePropertyTest, RefusesParametersThatDoNotIncrease) {
   RandomPath(4, 9, &path, &joints);
   PoseSpline spline;
   EXPECT_FALSE(PoseSpline::Fit(path, joints, {0, 1, 2, 3}, {0.0, 1.0, 1.0, 2.0}, &spline).ok());
+}
+
+}  // namespace
+}  // namespace tpopt
+
+namespace tpopt {
+namespace {
+
+// Tips at steps of 5 mm (3-4-0), 0 mm (the axis only turns) and 13 mm
+// (5-12-0).
+std::vector<ToolPose> StepsOf5And0And13() {
+  std::vector<ToolPose> poses(4);
+  poses[1].p_w_tip = Eigen::Vector3d(3, 4, 0);
+  poses[2].p_w_tip = poses[1].p_w_tip;
+  poses[2].a_w = AnglesToAxis(0.2, 0.1);
+  poses[3].p_w_tip = poses[2].p_w_tip + Eigen::Vector3d(5, 12, 0);
+  return poses;
+}
+
+// The one tip arc length, with either caller's least step: an absolute
+// one (the spline method's) and one scaled to the mean step (the
+// coarse-to-fine stations'); a standing pose gets exactly the floor.
+TEST(TipArcLengthTest, StepsAreTheTipDistancesWithTheFloorForAStandingPose) {
+  const std::vector<ToolPose> poses = StepsOf5And0And13();
+  std::vector<double> s = TipArcLength(poses.data(), poses.size(), {1e-6, 0.0});
+  ASSERT_EQ(s.size(), 4u);
+  EXPECT_EQ(s[0], 0.0);
+  EXPECT_DOUBLE_EQ(s[1], 5.0);
+  EXPECT_DOUBLE_EQ(s[2], 5.0 + 1e-6);
+  EXPECT_DOUBLE_EQ(s[3], 18.0 + 1e-6);
+  // Mean step 18 / 3 = 6 mm: the floor is 6e-6 mm, above the 1e-9 given.
+  s = TipArcLength(poses.data(), poses.size(), {1e-9, 1e-6});
+  EXPECT_DOUBLE_EQ(s[1], 5.0);
+  EXPECT_DOUBLE_EQ(s[2], 5.0 + 6e-6);
+  EXPECT_DOUBLE_EQ(s[3], 18.0 + 6e-6);
+  // All standing: the mean is 0, and the absolute floor holds.
+  std::vector<ToolPose> standing(3);
+  s = TipArcLength(standing.data(), standing.size(), {1e-9, 1e-6});
+  EXPECT_DOUBLE_EQ(s[1], 1e-9);
+  EXPECT_DOUBLE_EQ(s[2], 2e-9);
+  EXPECT_TRUE(TipArcLength(poses.data(), 0, {1e-6, 0.0}).empty());
+  EXPECT_EQ(TipArcLength(poses.data(), 1, {1e-6, 0.0}), std::vector<double>{0.0});
+}
+
+TEST(TipArcLengthTest, EachStepIsTheLargerOfTheTipDistanceAndTheFloorOnRandomPaths) {
+  for (unsigned seed = 1; seed <= 3; ++seed) {
+    ToolPath path;
+    std::vector<JointVector> joints;
+    RandomPath(40, seed, &path, &joints);
+    path.poses[7].p_w_tip = path.poses[6].p_w_tip;  // one standing pose
+    for (const ArcLengthStepFloor floor : {ArcLengthStepFloor{1e-6, 0.0},
+                                           ArcLengthStepFloor{1e-9, 1e-6}}) {
+      const std::vector<double> s = TipArcLength(path.poses.data(), path.poses.size(), floor);
+      double total = 0.0;
+      for (size_t i = 1; i < path.poses.size(); ++i) {
+        total += (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
+      }
+      const double floor_mm =
+          std::max(floor.min_step_mm, floor.of_mean_step * total / (path.poses.size() - 1));
+      for (size_t i = 1; i < s.size(); ++i) {
+        const double d = (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
+        EXPECT_NEAR(s[i] - s[i - 1], std::max(d, floor_mm), 1e-12) << seed << " " << i;
+      }
+      EXPECT_GT(s[7] - s[6], 0.0);
+    }
+  }
 }
 
 }  // namespace

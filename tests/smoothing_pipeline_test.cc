@@ -36,9 +36,7 @@ TEST(SmoothingPipelineTest, OutputIsJudgedOnTheInputsRange) {
   settings.deviation.samples_u = 30;
   settings.deviation.samples_v = 5;
   SmoothingResult result;
-  SmoothingFailure failure;
-  const Status s =
-      RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result, &failure);
+  const Status s = RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result);
   ASSERT_TRUE(s.ok()) << s.message();
   const DeviationReport& in = *result.input_metrics.deviation;
   EXPECT_NEAR(in.u.front(), 0.25, 1e-3);
@@ -137,9 +135,8 @@ TEST(SmoothingPipelineTest, EachRunIsSmoothedWithItsOwnToolsCutter) {
       settings.judge_on_input_range = true;
       settings.spline.smooth_outside_zones = true;
       SmoothingResult result;
-      SmoothingFailure failure;
       const Status s =
-          RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result, &failure);
+          RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result);
       ASSERT_TRUE(s.ok()) << s.message();
       const size_t second_out = SecondRun(result.output);
       ASSERT_LT(second_out, result.output.poses.size());
@@ -255,9 +252,7 @@ TEST(SmoothingPipelineTest, ARunEndingAtAToolChangeGoesBackAsProgrammed) {
   settings.deviation.interpolation = Interpolation::kTcp;
   settings.judge_on_input_range = true;
   SmoothingResult result;
-  SmoothingFailure failure;
-  const Status s =
-      RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result, &failure);
+  const Status s = RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result);
   ASSERT_TRUE(s.ok()) << s.message();
   EXPECT_GE(result.runs_kept_as_input, 1);
   const size_t second_out = SecondRun(result.output);

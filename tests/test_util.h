@@ -137,9 +137,7 @@ inline std::vector<Machine> SharedMachines() {
 // Runs the smoothing pipeline on random case `c`'s CAM path.
 inline Status SmoothRandomCase(const RandomCase& c, const SmoothingSettings& settings,
                                SmoothingResult* result) {
-  SmoothingFailure failure;
-  return RunSmoothing({&c.cam_path, &c.surface, &c.cutter, &c.machine}, settings, result,
-                      &failure);
+  return RunSmoothing({&c.cam_path, &c.surface, &c.cutter, &c.machine}, settings, result);
 }
 
 }  // namespace tpopt::testing

@@ -865,6 +865,42 @@ TEST(TpoptCliTest, EvaluateReportsTheTravelSmoothRefuses) {
   EXPECT_EQ(j["limit_violations"], 2);  // X 250 and X 260
 }
 
+// The exit code follows from the status's code alone (apps/exit_codes.h):
+// an input the pipeline refuses before any solve is exit 1, naming the
+// file (exit_codes_test holds the whole mapping, exit 3 for kSolver). What
+// was the solver's case here until the merge of s23-ha: no smooth path for
+// the hypar's clean SPO path of 80 poses keeps every grid point within
+// 0.002 mm (or the input's own error) after the four rounds; since then the
+// run that reaches those points goes back as programmed instead of the
+// result being refused (issue 17), so the command succeeds and writes it.
+TEST(TpoptCliTest, SmoothExitsOneForBadInputAndPutsBackWhatTheToleranceCannotHold) {
+  TempDir dir;
+  const std::string cls = dir.File("spo.cls"), out = dir.File("out.cls");
+  const std::string report = dir.File("report.json");
+  const std::string hypar = SourcePath("data/surfaces/hypar.json");
+  const std::string machine = SourcePath("data/machines/jcde2022_ac.json");
+  auto r = RunCommand(
+      Tpopt("generate --surface=" + hypar + " --cutter_radius=4 --poses=80 --out=" + cls));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = RunCommand(Tpopt("smooth --quiet --mode=high_accuracy --tolerance_mm=0.002 --in=" + cls +
+                       " --surface=" + hypar + " --machine=" + machine + " --out=" + out +
+                       " --report=" + report));
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(FileExists(out));
+  EXPECT_GE(ReadJson(report)["runs_kept_as_input"].get<int>(), 1);
+
+  // Only rapids: read and within the travel, but nothing to smooth.
+  const std::string rapids = dir.File("rapids.ngc");
+  std::ofstream(rapids) << "G21 G90 G94\nG0 X0 Y0 Z5 A10 C0\nG0 X10\nG0 X20\nM2\n";
+  r = RunCommand(Tpopt("smooth --quiet --mode=spline --cutter_radius=3 --in=" + rapids +
+                       " --machine=" + kSim + " --out=" + dir.File("rapids_out.ngc")));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find(rapids + ": the path has no cutting move to smooth"),
+            std::string::npos)
+      << r.output;
+  EXPECT_FALSE(FileExists(dir.File("rapids_out.ngc")));
+}
+
 TEST(TpoptCliPicturesTest, EvaluateWritesAnHtmlReportAndAVtpScene) {
   TempDir dir;
   const std::string cam = CamPath(dir, 60);

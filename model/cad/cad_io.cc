@@ -507,8 +507,7 @@ Status CheckIgesLayout(const std::string& path, const std::string& text) {
                            "', not its type");
     }
     if (type == 126 || type == 128) {
-      Status s = CheckIgesBSpline(name, type == 128, params);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(CheckIgesBSpline(name, type == 128, params));
     }
   }
   return Status::Ok();
@@ -543,8 +542,7 @@ Status ReadAndTransfer(const std::string& path, const std::string& format,
   if (reader->ReadFile(path.c_str()) != IFSelect_RetDone) {
     return Status::Error(path + ": not a readable " + format + " file");
   }
-  Status s = CheckParsed(path, *reader);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(CheckParsed(path, *reader));
   reader->TransferRoots();
   *shape = reader->OneShape();
   return Status::Ok();
@@ -572,15 +570,13 @@ Status LoadFaces(const std::string& path, LoadedFile* loaded) {
   TopoDS_Shape shape;
   if (IsStep(path)) {
     STEPControl_Reader reader;
-    s = ReadAndTransfer(path, "STEP", &reader, &shape);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadAndTransfer(path, "STEP", &reader, &shape));
     TColStd_SequenceOfAsciiString lengths, angles, solid_angles;
     reader.FileUnits(lengths, angles, solid_angles);
     if (!lengths.IsEmpty()) loaded->length_unit = lengths.First().ToCString();
   } else {
     IGESControl_Reader reader;
-    s = ReadAndTransfer(path, "IGES", &reader, &shape);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadAndTransfer(path, "IGES", &reader, &shape));
     const Handle(TCollection_HAsciiString) unit =
         reader.IGESModel()->GlobalSection().UnitName();
     if (!unit.IsNull()) loaded->length_unit = unit->ToCString();
@@ -1110,8 +1106,7 @@ Status ListCadFaces(const std::string& path,
                     std::vector<CadFaceSummary>* faces) {
   return GuardOcct(path, [&]() {
     LoadedFile loaded;
-    Status s = LoadFaces(path, &loaded);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(LoadFaces(path, &loaded));
     faces->clear();
     for (size_t i = 0; i < loaded.faces.size(); ++i) {
       bool trimmed = false;
@@ -1150,10 +1145,9 @@ Status ReadCadRuledSurface(const std::string& path,
           const double sign = OutwardSign(face, options.flip_cutter_side) *
                               (ruling_u ? -1.0 : 1.0);
           RuledSurface ruled;
-          Status s = RailsOf(
-              bs, ruling_u, what, name,
-              sign > 0 ? CutterSide::kPositive : CutterSide::kNegative, &ruled);
-          if (!s.ok()) return s;
+          RETURN_IF_ERROR(RailsOf(bs, ruling_u, what, name,
+                                  sign > 0 ? CutterSide::kPositive : CutterSide::kNegative,
+                                  &ruled));
           const bool exact = ExactlyRuled(bs, ruling_u);
           const double deviation =
               exact ? 0.0 : RuledDeviationMm(bs, ruling_u, ruled);
@@ -1195,10 +1189,9 @@ Status ReadCadBSplineSurface(const std::string& path,
                                std::to_string(bs->VDegree()) + " is above " +
                                std::to_string(BSplineSurface::kMaxDegree));
         }
-        Status s = BSplineSurface::Create(
-            bs->UDegree(), bs->VDegree(), FlatKnots(bs, true),
-            FlatKnots(bs, false), Net(bs, false), what, surface);
-        if (!s.ok()) return s;
+        RETURN_IF_ERROR(BSplineSurface::Create(bs->UDegree(), bs->VDegree(), FlatKnots(bs, true),
+                                               FlatKnots(bs, false), Net(bs, false), what,
+                                               surface));
         *cutter_side_sign = OutwardSign(face, options.flip_cutter_side);
         FillInfo(path, loaded, face, info);
         info->ruling.clear();

@@ -507,8 +507,7 @@ Status CheckInputs(const Cutter& cutter, const Motion& motion,
                    const DeviationOptions& options) {
   std::string why;
   if (!options.IsValid(&why)) return Status::Error("deviation: " + why);
-  Status s = cutter.Validate("deviation");
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(cutter.Validate("deviation"));
   if (motion.num_moves() == 0) {
     return Status::Error("deviation: the path has no cutting move to evaluate");
   }
@@ -528,10 +527,8 @@ Status MoveCutters(const Cutter& cutter, const ToolPath& path, const Motion& mot
     if (tool < 0 || static_cast<size_t>(tool) >= path.tools.size()) continue;
     const ToolRecord& record = path.tools[tool];
     if (!record.cutter) continue;
-    const Status s = record.cutter->Validate("deviation: tool " + std::to_string(record.number) +
-                                             " (line " + std::to_string(record.source_line) +
-                                             ")");
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(record.cutter->Validate("deviation: tool " + std::to_string(record.number) +
+                                            " (line " + std::to_string(record.source_line) + ")"));
     (*cutters)[m] = &*record.cutter;
   }
   return Status::Ok();
@@ -546,8 +543,7 @@ Status EvaluateOnGrid(const RuledSurface& surface, const Cutter& cutter,
                       const DeviationOptions& options, Least least,
                       DeviationReport* report) {
   CHECK(report != nullptr);
-  Status s = CheckInputs(cutter, motion, options);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(CheckInputs(cutter, motion, options));
   const auto [u_lo, u_hi] = GridRangeU(surface, path, options);
   DeviationReport out;
   InitGrid(u_lo, u_hi, options, &out);
@@ -586,8 +582,7 @@ Status EvaluateBrute(const RuledSurface& surface, const Cutter& cutter,
                          std::to_string(substeps_per_move) + " must be >= 1");
   }
   std::vector<const Cutter*> cutters;
-  Status s = MoveCutters(cutter, path, motion, options, &cutters);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(MoveCutters(cutter, path, motion, options, &cutters));
   auto least = [&](const Eigen::Vector3d& q) {
     double best = kInf;
     for (int m = 0; m < motion.num_moves(); ++m) {
@@ -613,8 +608,7 @@ Status MakeMotion(const ToolPath& path, const Machine* machine,
     *out = std::make_unique<Motion>(path);
     return (*out)->PrepareSlerp();
   }
-  Status s = machine->AssignJoints(path, joints);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(machine->AssignJoints(path, joints));
   *out = std::make_unique<Motion>(path, *machine, *joints, interpolation);
   return Status::Ok();
 }
@@ -664,8 +658,7 @@ Status EvaluateDeviation(const RuledSurface& surface, const Cutter& cutter,
                          DeviationReport* report) {
   std::vector<JointVector> joints;
   std::unique_ptr<Motion> motion;
-  Status s = MakeMotion(path, machine, options.interpolation, &joints, &motion);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(MakeMotion(path, machine, options.interpolation, &joints, &motion));
   return EvaluateFast(surface, cutter, path, *motion, options, report);
 }
 
@@ -686,8 +679,7 @@ Status EvaluateDeviationBruteForce(const RuledSurface& surface,
                                    DeviationReport* report) {
   std::vector<JointVector> joints;
   std::unique_ptr<Motion> motion;
-  Status s = MakeMotion(path, machine, options.interpolation, &joints, &motion);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(MakeMotion(path, machine, options.interpolation, &joints, &motion));
   return EvaluateBrute(surface, cutter, path, *motion, options,
                        substeps_per_move, report);
 }

@@ -16,13 +16,12 @@ Status EvaluatePath(const ToolPath& path, const Machine& machine, const RuledSur
   out.poses = static_cast<int>(path.poses.size());
   out.link_moves = CountLinks(path);
   std::vector<JointVector> joints;
-  Status s = machine.AssignJoints(path, &joints, &out.warning);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(machine.AssignJoints(path, &joints, &out.warning));
   out.motion = EvaluateMotion(machine, path, joints, motion_options);
   if (surface != nullptr) {
     DeviationReport deviation;
-    s = EvaluateDeviation(*surface, cutter, path, machine, joints, deviation_options, &deviation);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(
+        EvaluateDeviation(*surface, cutter, path, machine, joints, deviation_options, &deviation));
     out.deviation = std::move(deviation);
   }
   *metrics = std::move(out);

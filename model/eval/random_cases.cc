@@ -85,10 +85,8 @@ Status BuildSurface(const LocalSurface& local, int degree, int control_points,
   }
   BSplineCurve rail0, rail1;
   const std::string name = "random case " + std::to_string(seed);
-  Status s = BSplineCurve::Create(degree, knots, p0, name + ": rail 0", &rail0);
-  if (!s.ok()) return s;
-  s = BSplineCurve::Create(degree, knots, p1, name + ": rail 1", &rail1);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(BSplineCurve::Create(degree, knots, p0, name + ": rail 0", &rail0));
+  RETURN_IF_ERROR(BSplineCurve::Create(degree, knots, p1, name + ": rail 1", &rail1));
   *surface = RuledSurface(name, rail0, rail1, side);
   return Status::Ok();
 }
@@ -315,9 +313,8 @@ Status MakeRandomCase(unsigned seed, const RandomCaseOptions& options,
   for (const Eigen::Vector3d& centre : placements) {
     RandomCase trial = c;
     trial.parameters.placement_w_mm = centre;
-    Status s = BuildSurface(local, p.rail_degree, control_points, rotation,
-                            centre, p.side, seed, &trial.surface);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(BuildSurface(local, p.rail_degree, control_points, rotation, centre, p.side,
+                                 seed, &trial.surface));
     std::vector<double> u, noise;
     size_t next_micro = 0;
     for (size_t i = 0; i < u_body.size(); ++i) {
@@ -332,20 +329,17 @@ Status MakeRandomCase(unsigned seed, const RandomCaseOptions& options,
         ++next_micro;
       }
     }
-    s = BuildCamPath(trial.surface, p, u, noise, options.feed_mm_per_min,
-                     &trial.cam_path, &trial.cam_u);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(BuildCamPath(trial.surface, p, u, noise, options.feed_mm_per_min,
+                                 &trial.cam_path, &trial.cam_u));
     FlankPathOptions g;
     g.cutter_radius_mm = p.cutter_radius_mm;
     g.poses = options.poses;
     g.feed_mm_per_min = options.feed_mm_per_min;
     g.taper_rad = p.taper_deg * kDegToRad;
     g.strategy = FlankStrategy::kSinglePointOffset;
-    s = GenerateFlankPath(trial.surface, g, &trial.clean_spo);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(GenerateFlankPath(trial.surface, g, &trial.clean_spo));
     g.strategy = FlankStrategy::kDoublePointOffset;
-    s = GenerateFlankPath(trial.surface, g, &trial.clean_dpo);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(GenerateFlankPath(trial.surface, g, &trial.clean_dpo));
     trial.cutter = *trial.clean_dpo.cutter;
     trial.cutter.flute_length_mm += p.overhang_mm;
     for (ToolPath* path :

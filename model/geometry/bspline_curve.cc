@@ -13,8 +13,7 @@ Status BSplineCurve::Create(int degree, std::vector<double> knots,
                             std::vector<Eigen::Vector3d> control_points,
                             const std::string& what, BSplineCurve* curve) {
   CHECK(curve != nullptr);
-  Status s = NormalizeClampedKnots(degree, control_points.size(), what, &knots);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(NormalizeClampedKnots(degree, control_points.size(), what, &knots));
   for (size_t i = 0; i < control_points.size(); ++i) {
     if (!control_points[i].allFinite()) {
       std::ostringstream err;

@@ -36,9 +36,8 @@ Status BSplineSurface::Create(int degree_u, int degree_v, std::vector<double> kn
       return Status::Error(err.str());
     }
   }
-  Status s = NormalizeClampedKnots(degree_u, rows, what + ": knots_u", &knots_u);
-  if (s.ok()) s = NormalizeClampedKnots(degree_v, cols, what + ": knots_v", &knots_v);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(NormalizeClampedKnots(degree_u, rows, what + ": knots_u", &knots_u));
+  RETURN_IF_ERROR(NormalizeClampedKnots(degree_v, cols, what + ": knots_v", &knots_v));
   std::vector<Eigen::Vector3d> net;
   net.reserve(rows * cols);
   for (size_t i = 0; i < rows; ++i) {

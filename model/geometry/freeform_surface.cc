@@ -11,9 +11,8 @@ Status FreeformSurface::Create(std::string name, std::vector<double> knots_u,
                                FreeformSurface* surface) {
   constexpr int kDegree = 3;
   FreeformSurface result;
-  Status s = BSplineSurface::Create(kDegree, kDegree, std::move(knots_u), std::move(knots_v),
-                                    control_points, what, &result.surface_);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(BSplineSurface::Create(kDegree, kDegree, std::move(knots_u), std::move(knots_v),
+                                         control_points, what, &result.surface_));
   result.name_ = std::move(name);
   result.side_sign_ = cutter_side_sign < 0 ? -1.0 : 1.0;
   *surface = std::move(result);

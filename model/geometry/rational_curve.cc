@@ -84,8 +84,7 @@ Status RationalCurvePoints(const RationalCurve& curve, double chord_tolerance_mm
     return Status::Error(what + ": chord tolerance must be > 0");
   }
   Homogeneous h;
-  Status s = Build(curve, what, &h);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(Build(curve, what, &h));
   points->clear();
   // Start from the knot spans, so that no span is skipped by a chord whose
   // quarter points happen to lie on the curve.

@@ -157,16 +157,14 @@ class AptReader {
       if (continued) code.pop_back();
       text += code;
       if (continued) continue;
-      Status s = Handle(Split(text, first_line), raw);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(Handle(Split(text, first_line), raw));
       text.clear();
       raw.clear();
     }
     if (!text.empty()) {
       return Error(first_line, "statement continued with '$' but the file ends");
     }
-    Status s = FinishCurve();
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(FinishCurve());
     if (path_->poses.empty()) return Status::Error(name_ + ": no GOTO: the path is empty");
     // Inch coordinates within range may not be, in mm; nor the points of an
     // arc or curve.
@@ -226,8 +224,7 @@ class AptReader {
   Status Numbers(const Statement& st, std::vector<double>* out) const {
     out->resize(st.args.size());
     for (size_t k = 0; k < st.args.size(); ++k) {
-      Status s = Number(st, k, &(*out)[k]);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(Number(st, k, &(*out)[k]));
     }
     return Status::Ok();
   }
@@ -273,8 +270,7 @@ class AptReader {
       return Error(st.line, "GOTO needs 3 or 6 numbers, got " + std::to_string(st.args.size()));
     }
     std::vector<double> v;
-    Status s = Numbers(st, &v);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(Numbers(st, &v));
     if (st.args.size() == 6) {
       const Eigen::Vector3d a(v[3], v[4], v[5]);
       if (!(a.norm() > 1e-9)) {
@@ -288,11 +284,10 @@ class AptReader {
     if (circle_) {
       if (path_->poses.empty()) return Error(circle_line_, "CIRCLE has no start point (GOTO)");
       std::vector<Eigen::Vector3d> points;
-      s = ArcPoints(
+      RETURN_IF_ERROR(ArcPoints(
           *circle_, path_->poses.back().p_w_tip, tip, kCurveChordMm, kCurveFitMm,
           Where(circle_line_) + " (CIRCLE ending at line " + std::to_string(st.line) + ")",
-          &points);
-      if (!s.ok()) return s;
+          &points));
       AddCurvePoints(points, axis_, circle_line_);
     }
     ToolPose pose = NewPose(tip, st.line);
@@ -320,8 +315,7 @@ class AptReader {
     }
     double v[7];
     for (size_t k = 0; k < 7; ++k) {
-      Status s = Number(st, k, &v[k]);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(Number(st, k, &v[k]));
     }
     CircularArc arc;
     arc.center = mm_per_unit_ * Eigen::Vector3d(v[0], v[1], v[2]);
@@ -342,8 +336,7 @@ class AptReader {
   // make the knot vector) and CNTRL/x,y,z[,w] records, one a control point.
   Status CurveRecord(const Statement& st) {
     std::vector<double> v;
-    Status s = Numbers(st, &v);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(Numbers(st, &v));
     if (st.word == "KNOT") {
       for (double k : v) curve_->knots.push_back(mm_per_unit_ * k);
       return Status::Ok();
@@ -370,8 +363,7 @@ class AptReader {
                            std::to_string(n) + " control points (CNTRL) make no curve");
     }
     std::vector<Eigen::Vector3d> points;
-    Status s = RationalCurvePoints(curve, kCurveChordMm, what, &points);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(RationalCurvePoints(curve, kCurveChordMm, what, &points));
     const Eigen::Vector3d start = RationalCurvePoint(curve, 0.0);
     if ((start - path_->poses.back().p_w_tip).norm() > kCurveFitMm) {
       std::ostringstream err;
@@ -394,21 +386,17 @@ class AptReader {
     ToolRecord tool;
     tpopt::Cutter cutter;
     double d = 0.0;
-    Status s = Number(st, first_number, &d);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(Number(st, first_number, &d));
     cutter.radius_mm = 0.5 * mm_per_unit_ * d;
     if (st.args.size() > first_number + 1) {
-      s = Number(st, first_number + 1, &tool.corner_radius_mm);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(Number(st, first_number + 1, &tool.corner_radius_mm));
       tool.corner_radius_mm *= mm_per_unit_;
     }
     if (st.word == "TLDATA" && st.args.size() > first_number + 2) {
-      s = Number(st, first_number + 2, &cutter.flute_length_mm);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(Number(st, first_number + 2, &cutter.flute_length_mm));
       cutter.flute_length_mm *= mm_per_unit_;
     }
-    s = cutter.Validate(Where(st.line));
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(cutter.Validate(Where(st.line)));
     if (!(tool.corner_radius_mm >= 0 && tool.corner_radius_mm <= cutter.radius_mm)) {
       return Error(st.line, st.word + " corner radius " + st.args[first_number + 1] +
                                 " must be in [0, the cutter's radius]");
@@ -481,8 +469,7 @@ class AptReader {
                                 (mm_per_unit_ != 1.0 ? "inches" : "mm"));
     }
     double f = 0.0;
-    Status s = Number(st, value, &f);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(Number(st, value, &f));
     if (!(f > 0)) return Error(st.line, "FEDRAT " + st.args[value] + " must be > 0");
     feed_ = f * mm_per_unit_;
     program_.blocks.back().modal_feed = f;
@@ -530,8 +517,7 @@ class AptReader {
   Status Handle(const Statement& st, const std::string& raw) {
     const bool curve_record = st.word == "KNOT" || st.word == "CNTRL";
     if (curve_ && !curve_record) {
-      Status s = FinishCurve();
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(FinishCurve());
       hold_next_ = true;
     }
     AddBlock(st.line, raw);
@@ -626,8 +612,7 @@ Status ReadAptStream(std::istream& in, const std::string& name, ToolPath* tool_p
                      std::vector<std::string>* warnings) {
   ToolPath path;
   AptReader reader(name, &path, warnings);
-  Status s = reader.Read(in);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(reader.Read(in));
   *tool_path = std::move(path);
   return Status::Ok();
 }
@@ -729,8 +714,7 @@ Status FormatAptProgram(const ToolPath& input, const ToolPath& output,
       << "FormatAptProgram needs the APT program the input was read from";
   const Program& program = *input.program;
   std::vector<ProgramItem> items;
-  Status s = SpliceProgram(program, input, output, &items);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(SpliceProgram(program, input, output, &items));
   // Each item's units: those of the block it is or that its new poses
   // come before (the replaced move's).
   std::vector<double> unit(items.size(), 1.0);
@@ -845,9 +829,8 @@ std::string FormatApt(const ToolPath& tool_path, const std::vector<AptCurveSpan>
 
 Status WriteApt(const std::string& path, const ToolPath& tool_path,
                 const std::vector<AptCurveSpan>& spans) {
-  Status s = CheckWritable(path, tool_path);
-  if (s.ok()) s = CheckSpans(path, tool_path, spans);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(CheckWritable(path, tool_path));
+  RETURN_IF_ERROR(CheckSpans(path, tool_path, spans));
   return WriteFileAtomically(path, FormatApt(tool_path, spans));
 }
 

@@ -22,11 +22,10 @@ Status Degree(const json& j, const std::string& key, const std::string& what) {
 Status FreeformFromJson(const std::string& path, const json& j, FreeformSurface* surface) {
   const std::string what = path + ": surface";
   std::string kind, units, side, name;
-  Status s = JsonStringOr(j, "kind", what, "(absent)", &kind);
-  if (s.ok()) s = JsonStringOr(j, "units", what, "mm", &units);
-  if (s.ok()) s = JsonStringOr(j, "cutter_side", what, "positive", &side);
-  if (s.ok()) s = JsonStringOr(j, "name", what, path, &name);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(JsonStringOr(j, "kind", what, "(absent)", &kind));
+  RETURN_IF_ERROR(JsonStringOr(j, "units", what, "mm", &units));
+  RETURN_IF_ERROR(JsonStringOr(j, "cutter_side", what, "positive", &side));
+  RETURN_IF_ERROR(JsonStringOr(j, "name", what, path, &name));
   if (kind != "bspline_surface") {
     return Status::Error(path + ": kind \"" + kind + "\" is not \"bspline_surface\"");
   }
@@ -40,12 +39,11 @@ Status FreeformFromJson(const std::string& path, const json& j, FreeformSurface*
   }
   std::vector<double> knots_u, knots_v;
   std::vector<std::vector<Eigen::Vector3d>> net;
-  s = Degree(j, "degree_u", path);
-  if (s.ok()) s = Degree(j, "degree_v", path);
-  if (s.ok()) s = JsonNumbers(j["knots_u"], path + ": knots_u", &knots_u);
-  if (s.ok()) s = JsonNumbers(j["knots_v"], path + ": knots_v", &knots_v);
-  if (s.ok()) s = JsonControlNet(j["control_points"], path + ": control_points", &net);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(Degree(j, "degree_u", path));
+  RETURN_IF_ERROR(Degree(j, "degree_v", path));
+  RETURN_IF_ERROR(JsonNumbers(j["knots_u"], path + ": knots_u", &knots_u));
+  RETURN_IF_ERROR(JsonNumbers(j["knots_v"], path + ": knots_v", &knots_v));
+  RETURN_IF_ERROR(JsonControlNet(j["control_points"], path + ": control_points", &net));
   return FreeformSurface::Create(name, std::move(knots_u), std::move(knots_v), net,
                                  side == "negative" ? -1.0 : 1.0, path, surface);
 }

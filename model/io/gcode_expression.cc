@@ -123,8 +123,7 @@ Status GcodeParameters::ReadValue(const std::string& code, size_t* pos, double* 
   }
   if (code[i] == '[') {
     ++i;
-    Status s = ReadExpression(code, pos, value);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadExpression(code, pos, value));
     if (i >= code.size() || code[i] != ']') {
       return Status::Error("an expression lacks its closing ']' at " + At(code, i));
     }
@@ -148,22 +147,20 @@ Status GcodeParameters::ReadValue(const std::string& code, size_t* pos, double* 
     if (name == "EXISTS") {
       ++i;
       std::string key;
-      Status s = i < code.size() && code[i] == '#' ? ReadKey(code, pos, &key)
-                                                   : Status::Error("EXISTS needs a #parameter");
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(i < code.size() && code[i] == '#'
+                          ? ReadKey(code, pos, &key)
+                          : Status::Error("EXISTS needs a #parameter"));
       if (i >= code.size() || code[i] != ']') return Status::Error("EXISTS lacks its ']'");
       ++i;
       *value = values_.count(key) > 0;
       return Status::Ok();
     }
-    Status s = ReadValue(code, pos, &x);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ReadValue(code, pos, &x));
     if (name == "ATAN") {
       double x2 = 0.0;
       if (i >= code.size() || code[i] != '/') return Status::Error("ATAN needs ATAN[y]/[x]");
       ++i;
-      s = ReadValue(code, pos, &x2);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(ReadValue(code, pos, &x2));
       *value = std::atan2(x, x2) / kDegToRad;
       return Status::Ok();
     }
@@ -192,8 +189,7 @@ Status GcodeParameters::ReadValue(const std::string& code, size_t* pos, double* 
 
 Status GcodeParameters::ReadAssignment(const std::string& code, size_t* pos,
                                        std::pair<std::string, double>* assignment) const {
-  Status s = ReadKey(code, pos, &assignment->first);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ReadKey(code, pos, &assignment->first));
   if (*pos >= code.size() || code[*pos] != '=') {
     return Status::Error("parameter " + assignment->first + " is not followed by '='");
   }
@@ -214,8 +210,7 @@ Status GcodeParameters::ReadKey(const std::string& code, size_t* pos, std::strin
     return Status::Ok();
   }
   double number = 0.0;
-  Status s = ReadValue(code, pos, &number);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ReadValue(code, pos, &number));
   if (number != std::round(number) || number < 1 || number > kLastParameter) {
     return Status::Error("parameter number " + std::to_string(number) + " is not an integer in 1-" +
                          std::to_string(kLastParameter));

@@ -68,8 +68,7 @@ Status FormatGcode(const ToolPath& path, const Machine& machine, const GcodeOpti
                    std::string* program) {
   if (std::string why; !o.IsValid(&why)) return Status::Error(why);
   std::vector<JointVector> joints;
-  Status s = machine.AssignJoints(path, &joints);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(machine.AssignJoints(path, &joints));
   std::string out = Header(path, o, machine);
   char line[256];
   double last_feed = -1.0;
@@ -107,8 +106,7 @@ Status FormatGcode(const ToolPath& path, const Machine& machine, const GcodeOpti
 Status WriteGcode(const std::string& file, const ToolPath& path, const Machine& machine,
                   const GcodeOptions& options) {
   std::string program;
-  Status s = FormatGcode(path, machine, options, &program);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(FormatGcode(path, machine, options, &program));
   return WriteFileAtomically(file, program);
 }
 
@@ -142,11 +140,9 @@ Status FormatGcodeProgram(const ToolPath& input, const ToolPath& output, const M
   if (std::string why; !o.IsValid(&why)) return Status::Error(why);
   const Program& program = *output.program;
   std::vector<ProgramItem> items;
-  Status s = SpliceProgram(program, input, output, &items);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(SpliceProgram(program, input, output, &items));
   std::vector<JointVector> joints;
-  s = machine.AssignJoints(output, &joints);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(machine.AssignJoints(output, &joints));
   const std::vector<int> context = ContextBlocks(program, output);
   std::string out;
   char line[256];
@@ -201,8 +197,7 @@ Status FormatGcodeProgram(const ToolPath& input, const ToolPath& output, const M
 Status WriteGcodeProgram(const std::string& file, const ToolPath& input, const ToolPath& output,
                          const Machine& machine, const GcodeOptions& options) {
   std::string text;
-  Status s = FormatGcodeProgram(input, output, machine, options, &text);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(FormatGcodeProgram(input, output, machine, options, &text));
   return WriteFileAtomically(file, text);
 }
 
@@ -289,8 +284,7 @@ class GcodeReader {
       block.text = line;
       if (!ended_) {
         if (!StripComments(line, &code)) return Error(n, "unbalanced parenthesis in a comment");
-        Status s = Block(code, n, line, &block);
-        if (!s.ok()) return s;
+        RETURN_IF_ERROR(Block(code, n, line, &block));
       }
       block.mm_per_unit = scale_;
       block.machine_joints = style_ == GcodeStyle::kJoint;
@@ -318,12 +312,10 @@ class GcodeReader {
   }
 
   Status Codes(const std::vector<std::pair<char, double>>& words, int n, BlockCodes* codes) {
-    Status s = Tools(words, n);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(Tools(words, n));
     for (const auto& [letter, value] : words) {
       if (letter == 'G') {
-        Status s = GCode(value, n, codes);
-        if (!s.ok()) return s;
+        RETURN_IF_ERROR(GCode(value, n, codes));
       } else if (letter == 'M') {
         codes->other = true;
         if (value != std::round(value))
@@ -621,11 +613,9 @@ class GcodeReader {
     }
     std::vector<std::pair<char, double>> words;
     std::vector<std::pair<std::string, double>> assignments;
-    Status s = Words(code, n, &words, &assignments);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(Words(code, n, &words, &assignments));
     BlockCodes codes;
-    s = Codes(words, n, &codes);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(Codes(words, n, &codes));
     std::map<char, double> axes;
     for (const auto& [letter, value] : words) {
       if (std::string("XYZAC").find(letter) != std::string::npos) axes[letter] = value;
@@ -637,16 +627,14 @@ class GcodeReader {
     for (const auto& [key, value] : assignments) parameters_.Set(key, value);
     if (!assignments.empty()) codes.other = true;
     if (!axes.empty() && !codes.axis_data) {
-      s = Motion(axes, codes, n, line.find(kLinkComment) != std::string::npos, block);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(Motion(axes, codes, n, line.find(kLinkComment) != std::string::npos, block));
     } else {
       Break();
     }
     if (codes.all_unknown_after) std::fill(known_, known_ + kAxes, false);
     if (codes.z_unknown_after) known_[2] = false;
     if (codes.length_offset != 0) {
-      s = LengthOffset(codes.length_offset, words, n);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(LengthOffset(codes.length_offset, words, n));
     }
     if (codes.ends) ended_ = true;
     return Status::Ok();
@@ -772,8 +760,7 @@ Status ReadGcodeStream(std::istream& in, const std::string& name, const Machine&
                        GcodeStyle style, ToolPath* path, std::vector<std::string>* warnings) {
   ToolPath out;
   GcodeReader reader(name, machine, style, &out, warnings);
-  Status s = reader.Read(in);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(reader.Read(in));
   *path = std::move(out);
   return Status::Ok();
 }

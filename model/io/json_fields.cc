@@ -50,8 +50,7 @@ Status JsonPoint(const json& j, const std::string& what, Eigen::Vector3d* p, int
   }
   p->setZero();
   for (int k = 0; k < dimension; ++k) {
-    Status s = JsonNumber(j[k], what + "[" + std::to_string(k) + "]", &(*p)[k]);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(JsonNumber(j[k], what + "[" + std::to_string(k) + "]", &(*p)[k]));
   }
   return Status::Ok();
 }
@@ -65,8 +64,7 @@ Status JsonControlNet(const json& j, const std::string& what,
     if (!j[i].is_array()) return Status::Error(row + " must be an array of [x, y, z]");
     (*net)[i].resize(j[i].size());
     for (size_t k = 0; k < j[i].size(); ++k) {
-      Status s = JsonPoint(j[i][k], row + "[" + std::to_string(k) + "]", &(*net)[i][k]);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(JsonPoint(j[i][k], row + "[" + std::to_string(k) + "]", &(*net)[i][k]));
     }
   }
   return Status::Ok();
@@ -76,8 +74,7 @@ Status JsonNumbers(const json& j, const std::string& what, std::vector<double>* 
   if (!j.is_array()) return Status::Error(what + " must be an array of numbers");
   out->resize(j.size());
   for (size_t k = 0; k < out->size(); ++k) {
-    Status s = JsonNumber(j[k], what + "[" + std::to_string(k) + "]", &(*out)[k]);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(JsonNumber(j[k], what + "[" + std::to_string(k) + "]", &(*out)[k]));
   }
   return Status::Ok();
 }

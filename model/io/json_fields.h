@@ -40,8 +40,7 @@ Status JsonStringOr(const nlohmann::json& j, const std::string& key, const std::
 template <typename Value, typename Convert>
 Status ReadJsonFile(const std::string& path, Convert convert, Value* value) {
   nlohmann::json j;
-  Status s = ParseJsonFile(path, &j);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ParseJsonFile(path, &j));
   try {
     return convert(path, j, value);
   } catch (const nlohmann::json::exception& e) {

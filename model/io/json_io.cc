@@ -40,13 +40,12 @@ Status Rail(const json& j, const std::string& what, BSplineCurve* curve, int dim
     return Status::Error(what + ".control_points must be an array");
   }
   std::vector<double> knots;
-  Status s = JsonNumbers(j["knots"], what + ".knots", &knots);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(JsonNumbers(j["knots"], what + ".knots", &knots));
   std::vector<Eigen::Vector3d> points(j["control_points"].size());
   for (size_t k = 0; k < points.size(); ++k) {
-    s = JsonPoint(j["control_points"][k], what + ".control_points[" + std::to_string(k) + "]",
-                  &points[k], dimension);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(JsonPoint(j["control_points"][k],
+                              what + ".control_points[" + std::to_string(k) + "]", &points[k],
+                              dimension));
   }
   return BSplineCurve::Create(j["degree"].get<int>(), std::move(knots), std::move(points), what,
                               curve);
@@ -57,8 +56,7 @@ Status Optional(const json& j, const std::string& key, const std::string& what, 
                 double* out) {
   if (!j.contains(key) || j[key].is_null()) return Status::Ok();
   double v = 0.0;
-  Status s = JsonNumber(j[key], what + "." + key, &v);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(JsonNumber(j[key], what + "." + key, &v));
   *out = v * scale;
   return Status::Ok();
 }
@@ -71,12 +69,11 @@ Status AxisFromJson(const json& j, const std::string& what, double scale, AxisLi
       return Status::Error(what + ": unknown key '" + key + "'");
     }
   }
-  Status s = Optional(j, "min", what, scale, &l->min);
-  if (s.ok()) s = Optional(j, "max", what, scale, &l->max);
-  if (s.ok()) s = Optional(j, "max_velocity", what, scale, &l->max_velocity);
-  if (s.ok()) s = Optional(j, "max_acceleration", what, scale, &l->max_acceleration);
-  if (s.ok()) s = Optional(j, "max_jerk", what, scale, &l->max_jerk);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(Optional(j, "min", what, scale, &l->min));
+  RETURN_IF_ERROR(Optional(j, "max", what, scale, &l->max));
+  RETURN_IF_ERROR(Optional(j, "max_velocity", what, scale, &l->max_velocity));
+  RETURN_IF_ERROR(Optional(j, "max_acceleration", what, scale, &l->max_acceleration));
+  RETURN_IF_ERROR(Optional(j, "max_jerk", what, scale, &l->max_jerk));
   if (l->min > l->max) {
     std::ostringstream err;
     err << what << ": min " << l->min / scale << " is above max " << l->max / scale;
@@ -94,11 +91,10 @@ Status AxisFromJson(const json& j, const std::string& what, double scale, AxisLi
 
 Status SurfaceFromJson(const std::string& path, const json& j, RuledSurface* surface) {
   std::string kind, units, side_name, name;
-  Status s = JsonStringOr(j, "kind", path + ": surface", "ruled", &kind);
-  if (s.ok()) s = JsonStringOr(j, "units", path + ": surface", "mm", &units);
-  if (s.ok()) s = JsonStringOr(j, "cutter_side", path + ": surface", "positive", &side_name);
-  if (s.ok()) s = JsonStringOr(j, "name", path + ": surface", path, &name);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(JsonStringOr(j, "kind", path + ": surface", "ruled", &kind));
+  RETURN_IF_ERROR(JsonStringOr(j, "units", path + ": surface", "mm", &units));
+  RETURN_IF_ERROR(JsonStringOr(j, "cutter_side", path + ": surface", "positive", &side_name));
+  RETURN_IF_ERROR(JsonStringOr(j, "name", path + ": surface", path, &name));
   if (kind != "ruled") {
     return Status::Error(path + ": kind \"" + kind + "\" is not supported (\"ruled\")");
   }
@@ -115,8 +111,7 @@ Status SurfaceFromJson(const std::string& path, const json& j, RuledSurface* sur
   }
   BSplineCurve rails[2];
   for (int i = 0; i < 2; ++i) {
-    s = Rail(j["rails"][i], path + ": rails[" + std::to_string(i) + "]", &rails[i]);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(Rail(j["rails"][i], path + ": rails[" + std::to_string(i) + "]", &rails[i]));
   }
   *surface = RuledSurface(name, rails[0], rails[1], side);
   return Status::Ok();
@@ -125,21 +120,20 @@ Status SurfaceFromJson(const std::string& path, const json& j, RuledSurface* sur
 Status MachineFromJson(const std::string& path, const json& j, Machine* machine) {
   std::string kinematics;
   Machine m;
-  Status s = JsonStringOr(j, "kinematics", path + ": machine", "(absent)", &kinematics);
-  if (s.ok()) s = JsonStringOr(j, "name", path + ": machine", path, &m.name);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(JsonStringOr(j, "kinematics", path + ": machine", "(absent)", &kinematics));
+  RETURN_IF_ERROR(JsonStringOr(j, "name", path + ": machine", path, &m.name));
   if (kinematics != "xyzac-trt") {
     return Status::Error(path + ": kinematics \"" + kinematics +
                          "\" is not supported (\"xyzac-trt\")");
   }
   if (j.contains("rotary_pivot")) {
-    s = JsonPoint(j["rotary_pivot"], path + ": rotary_pivot", &m.kinematics.rotary_pivot_mm);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(
+        JsonPoint(j["rotary_pivot"], path + ": rotary_pivot", &m.kinematics.rotary_pivot_mm));
   }
-  s = Optional(j, "y_offset", path + ": machine", 1.0, &m.kinematics.y_offset_mm);
-  if (s.ok()) s = Optional(j, "z_offset", path + ": machine", 1.0, &m.kinematics.z_offset_mm);
-  if (s.ok()) s = Optional(j, "tool_length", path + ": machine", 1.0, &m.kinematics.tool_length_mm);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(Optional(j, "y_offset", path + ": machine", 1.0, &m.kinematics.y_offset_mm));
+  RETURN_IF_ERROR(Optional(j, "z_offset", path + ": machine", 1.0, &m.kinematics.z_offset_mm));
+  RETURN_IF_ERROR(
+      Optional(j, "tool_length", path + ": machine", 1.0, &m.kinematics.tool_length_mm));
   if (j.contains("axes")) {
     if (!j["axes"].is_object()) return Status::Error(path + ": axes must be an object");
     for (const auto& [key, value] : j["axes"].items()) {
@@ -148,9 +142,8 @@ Status MachineFromJson(const std::string& path, const json& j, Machine* machine)
         return Status::Error(path + ": axes." + key + " is not one of X, Y, Z, A, C");
       }
       const int axis = static_cast<int>(it - kAxisNames.begin());
-      s = AxisFromJson(value, path + ": axes." + key, axis >= kA ? kDegToRad : 1.0,
-                       &m.limits[axis]);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(AxisFromJson(value, path + ": axes." + key, axis >= kA ? kDegToRad : 1.0,
+                                   &m.limits[axis]));
     }
   }
   *machine = m;
@@ -160,9 +153,8 @@ Status MachineFromJson(const std::string& path, const json& j, Machine* machine)
 // "units" must be mm and "kind" `kind` (both optional).
 Status CheckKindAndUnits(const json& j, const std::string& path, const std::string& kind) {
   std::string found_kind, units;
-  Status s = JsonStringOr(j, "kind", path + ": file", kind, &found_kind);
-  if (s.ok()) s = JsonStringOr(j, "units", path + ": file", "mm", &units);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(JsonStringOr(j, "kind", path + ": file", kind, &found_kind));
+  RETURN_IF_ERROR(JsonStringOr(j, "units", path + ": file", "mm", &units));
   if (found_kind != kind) {
     return Status::Error(path + ": kind \"" + found_kind + "\" is not supported (\"" + kind +
                          "\")");
@@ -186,8 +178,7 @@ Status BSplineSurfaceFromJson(const std::string& path, const json& j, BSplineSur
     return Status::Error(path + ": surface.control_points must be an array of rows");
   }
   std::vector<std::vector<Eigen::Vector3d>> net;
-  s = JsonControlNet(j["control_points"], path + ": surface.control_points", &net);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(JsonControlNet(j["control_points"], path + ": surface.control_points", &net));
   return BSplineSurface::Create(degree_u, degree_v, std::move(knots_u), std::move(knots_v),
                                 std::move(net), path + ": surface", surface);
 }
@@ -205,15 +196,13 @@ Status PlacementFromJson(const std::string& path, const json& j, GuidePlacement*
   Status s;
   if (p.contains("anchor_uv")) {
     std::vector<double> uv;
-    s = NumbersAt(p, "anchor_uv", what, &uv);
-    if (s.ok() && uv.size() != 2) s = Status::Error(what + ".anchor_uv must be [u, v]");
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(NumbersAt(p, "anchor_uv", what, &uv));
+    if (uv.size() != 2) return Status::Error(what + ".anchor_uv must be [u, v]");
     placement->anchor_u = uv[0];
     placement->anchor_v = uv[1];
   }
-  s = Optional(p, "lift_mm", what, 1.0, &placement->lift_mm);
-  if (s.ok()) s = Optional(p, "spin_deg", what, 1.0, &placement->spin_deg);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(Optional(p, "lift_mm", what, 1.0, &placement->lift_mm));
+  RETURN_IF_ERROR(Optional(p, "spin_deg", what, 1.0, &placement->spin_deg));
   std::string why;
   if (!placement->IsValid(&why)) return Status::Error(what + ": " + why);
   return Status::Ok();
@@ -225,16 +214,15 @@ struct GuideCurves {
 };
 
 Status GuideCurvesFromJson(const std::string& path, const json& j, GuideCurves* guides) {
-  Status s = CheckKindAndUnits(j, path, "planar_curves");
-  if (s.ok()) s = PlacementFromJson(path, j, &guides->placement);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(CheckKindAndUnits(j, path, "planar_curves"));
+  RETURN_IF_ERROR(PlacementFromJson(path, j, &guides->placement));
   if (!j.contains("curves") || !j["curves"].is_array() || j["curves"].empty()) {
     return Status::Error(path + ": curves must be a non-empty array of curves");
   }
   guides->curves.resize(j["curves"].size());
   for (size_t i = 0; i < guides->curves.size(); ++i) {
-    s = Rail(j["curves"][i], path + ": curves[" + std::to_string(i) + "]", &guides->curves[i], 2);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(
+        Rail(j["curves"][i], path + ": curves[" + std::to_string(i) + "]", &guides->curves[i], 2));
   }
   return Status::Ok();
 }
@@ -248,8 +236,7 @@ Status ReadBSplineSurfaceJson(const std::string& path, BSplineSurface* surface) 
 Status ReadGuideCurvesJson(const std::string& path, std::vector<BSplineCurve>* curves,
                            GuidePlacement* placement) {
   GuideCurves guides;
-  Status s = ReadJsonFile(path, GuideCurvesFromJson, &guides);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(ReadJsonFile(path, GuideCurvesFromJson, &guides));
   *curves = std::move(guides.curves);
   *placement = guides.placement;
   return Status::Ok();

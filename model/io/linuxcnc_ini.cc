@@ -104,8 +104,7 @@ Status TightenBy(const Ini& ini, const std::string& name,
     if (e == nullptr) continue;
     double v = 0;
     const std::string where = Where(name, *e, section, k.key);
-    Status s = ToNumber(where, e->value, &v);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(ToNumber(where, e->value, &v));
     if (k.field != &limits->min && k.field != &limits->max && !(v > 0)) {
       return Status::Error(where + " = " + e->value + " must be > 0");
     }
@@ -189,8 +188,7 @@ Status KinematicsPins(
     for (const std::string& pin : targets) {
       if (pin.rfind(std::string(kKins) + ".", 0) != 0) continue;
       double v = 0;
-      Status s = ToNumber(sets_where[i] + ": " + w[0] + " " + w[1], w[2], &v);
-      if (!s.ok()) return s;
+      RETURN_IF_ERROR(ToNumber(sets_where[i] + ": " + w[0] + " " + w[1], w[2], &v));
       (*pins)[pin.substr(sizeof(kKins))] = {v, sets_where[i]};
     }
   }

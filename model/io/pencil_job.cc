@@ -11,9 +11,8 @@ Status LoadPencilJob(const std::string& surface_path, const std::string& curve_p
 }
 
 Status CompletePencilJob(const std::string& curve_path, double ball_radius_mm, PencilJob* job) {
-  Status s = ReadGuideCurvesJson(curve_path, &job->guides, &job->placement);
-  if (!s.ok()) return s;
-  s = PencilGeometry::Create(job->surface, job->placement, ball_radius_mm, &job->geometry);
+  RETURN_IF_ERROR(ReadGuideCurvesJson(curve_path, &job->guides, &job->placement));
+  Status s = PencilGeometry::Create(job->surface, job->placement, ball_radius_mm, &job->geometry);
   if (!s.ok()) return Status::Error(curve_path + ": " + s.message());
   return Status::Ok();
 }

@@ -317,8 +317,7 @@ Status Machine::AssignJoints(const ToolPath& path, std::vector<JointVector>* joi
                              std::string* warning) const {
   CHECK(joints != nullptr);
   std::vector<double> a_rad, c_rad;
-  Status st = AssignRotaryAngles(path, 0, path.poses.size(), &a_rad, &c_rad);
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(AssignRotaryAngles(path, 0, path.poses.size(), &a_rad, &c_rad));
   joints->resize(path.poses.size());
   double min_sin_a = 1.0;
   size_t min_sin_index = 0;

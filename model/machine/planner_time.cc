@@ -39,9 +39,12 @@ bool PlannerOptions::IsValid(std::string* why) const {
   return problem.empty();
 }
 
-PlannerMove PlanMove(const Machine& machine, const ToolPath& path,
-                     const std::vector<JointVector>& joints, size_t i,
-                     const PlannerOptions& options) {
+namespace {
+
+// PlanMove for a caller that has the move's SegmentTime, dt_s, already.
+PlannerMove PlanMoveTaking(double dt_s, const Machine& machine, const ToolPath& path,
+                           const std::vector<JointVector>& joints, size_t i,
+                           const PlannerOptions& options) {
   CHECK_LT(i + 1, path.poses.size());
   PlannerMove move;
   const Eigen::Vector3d dp = path.poses[i + 1].p_w_tip - path.poses[i].p_w_tip;
@@ -53,8 +56,6 @@ PlannerMove PlanMove(const Machine& machine, const ToolPath& path,
   move.length = move.rotary_only
                     ? std::max(std::abs(dj[kA]), std::abs(dj[kC])) * kRadToDeg
                     : tip_mm;
-  const double dt_s =
-      SegmentTime(machine, path, joints, i, options.default_feed_mm_per_min);
   move.requested_speed = dt_s > 0 ? move.length / dt_s : kInf;
   double v_move = kInf;
   double a_move = kInf;
@@ -75,6 +76,16 @@ PlannerMove PlanMove(const Machine& machine, const ToolPath& path,
   move.max_speed = std::min(move.axis_speed, move.triangle_speed);
   move.speed = std::min(move.requested_speed, move.max_speed);
   return move;
+}
+
+}  // namespace
+
+PlannerMove PlanMove(const Machine& machine, const ToolPath& path,
+                     const std::vector<JointVector>& joints, size_t i,
+                     const PlannerOptions& options) {
+  CHECK_LT(i + 1, path.poses.size());
+  return PlanMoveTaking(SegmentTime(machine, path, joints, i, options.default_feed_mm_per_min),
+                        machine, path, joints, i, options);
 }
 
 PlannerTime PredictPlannerTime(const Machine& machine, const ToolPath& path,
@@ -99,7 +110,7 @@ PlannerTime PredictPlannerTime(const Machine& machine, const ToolPath& path,
       previous_feed = false;
       continue;
     }
-    const PlannerMove move = PlanMove(machine, path, joints, i, options);
+    const PlannerMove move = PlanMoveTaking(dt_s, machine, path, joints, i, options);
     out.time_s += move.speed > 0 ? move.length / move.speed : dt_s;
     out.capped_moves += move.speed < move.requested_speed * (1 - 1e-9);
     if (previous_feed && previous.rotary_only == move.rotary_only) {

@@ -123,8 +123,7 @@ Status GenerateFlankPath(const RuledSurface& surface, const FlankPathOptions& o,
     const double u = static_cast<double>(i) / (o.poses - 1);
     ToolPose pose;
     double ruling_mm = 0.0;
-    const Status s = FlankPoseAt(surface, o, u, &pose, &ruling_mm);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(FlankPoseAt(surface, o, u, &pose, &ruling_mm));
     longest_ruling_mm = std::max(longest_ruling_mm, ruling_mm);
     if (o.axis_noise_deg > 0) pose.a_w = Perturb(pose.a_w, o.axis_noise_deg * M_PI / 180, &rng);
     out.poses.push_back(pose);

@@ -108,9 +108,9 @@ Status MoveRuledSurface(const RuledSurface& surface, const Eigen::Matrix3d& rota
     const BSplineCurve& rail = surface.rail(i);
     std::vector<Eigen::Vector3d> points = rail.control_points();
     for (Eigen::Vector3d& q : points) q = rotation * q + translation_mm;
-    Status s = BSplineCurve::Create(rail.degree(), rail.knots(), std::move(points),
-                                    surface.name() + ": rail " + std::to_string(i), &rails[i]);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(BSplineCurve::Create(rail.degree(), rail.knots(), std::move(points),
+                                         surface.name() + ": rail " + std::to_string(i),
+                                         &rails[i]));
   }
   *moved = RuledSurface(surface.name(), rails[0], rails[1], surface.cutter_side());
   return Status::Ok();

@@ -169,8 +169,7 @@ CubicSpan WindowFit::MiddleSpan(const Eigen::Vector3d& p1, const Eigen::Vector3d
 Status FitWindow(const std::array<Eigen::Vector3d, 4>& p,
                  const std::array<Eigen::Vector3d, 4>& tangents, const LocalFitOptions& options,
                  size_t first_index, WindowFit* fit) {
-  Status s = CheckWindow(p, tangents, first_index);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(CheckWindow(p, tangents, first_index));
   const std::array<double, 3> chords = {(p[1] - p[0]).norm(), (p[2] - p[1]).norm(),
                                         (p[3] - p[2]).norm()};
   const std::array<double, 3> arcs = WindowArcs(p, chords, options);
@@ -230,8 +229,7 @@ Status FitPolyline(const std::vector<Eigen::Vector3d>& points,
     const std::array<Eigen::Vector3d, 4> t = {unit_tangents[first], unit_tangents[first + 1],
                                               unit_tangents[first + 2],
                                               unit_tangents[first + 3]};
-    Status s = FitWindow(p, t, options, index_offset + first, &fit);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(FitWindow(p, t, options, index_offset + first, &fit));
     if (first == 0) {
       CubicSpan head = fit.Spans()[0];
       head.bezier[0] = p[0];

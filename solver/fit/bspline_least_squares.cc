@@ -101,8 +101,7 @@ Status SolveForCount(const std::vector<Eigen::Vector3d>& points, const std::vect
     const Eigen::MatrixXd x = solver.solve(a.transpose() * rhs);
     for (int j = 1; j + 1 < n; ++j) control[j] = x.row(j - 1).transpose();
   }
-  Status s = BSplineCurve::Create(kDegree, knots, control, "least-squares fit", curve);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(BSplineCurve::Create(kDegree, knots, control, "least-squares fit", curve));
   *max_error = 0.0;
   for (int k = 0; k <= m; ++k) {
     *max_error = std::max(*max_error, (curve->Point(t[k]) - points[k]).norm());
@@ -126,15 +125,14 @@ Status FitLeastSquares(const std::vector<Eigen::Vector3d>& points,
     return Status::Error("a least-squares fit needs at least 4 points, got " +
                          std::to_string(points.size()));
   }
-  Status s = DataParameters(points, options.parametrization, &fit->parameters);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(DataParameters(points, options.parametrization, &fit->parameters));
   // Bisection on the control-point count: error falls (almost always) as
   // the count grows, and the count equal to the number of points
   // interpolates.
   int lo = kDegree + 1, hi = static_cast<int>(points.size());
   BSplineCurve curve;
   double error = 0.0;
-  s = SolveForCount(points, fit->parameters, hi, &curve, &error);
+  Status s = SolveForCount(points, fit->parameters, hi, &curve, &error);
   if (!s.ok()) return s;
   if (error > options.tolerance_mm) {
     return Status::Error("even interpolation misses the tolerance of " +

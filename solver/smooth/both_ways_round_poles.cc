@@ -70,8 +70,7 @@ Status EvaluateFinalCost(const SmoothingInputs& inputs, const HighAccuracyOption
   evaluate_only.coarse_poses = 0;  // coarse levels would move the path
   ToolPath unchanged;
   HighAccuracyReport evaluated;
-  Status s = SmoothHighAccuracy(at_path, evaluate_only, &unchanged, &evaluated);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(SmoothHighAccuracy(at_path, evaluate_only, &unchanged, &evaluated));
   report->final_cost = evaluated.final_cost;
   report->final_cost_by_family = evaluated.final_cost_by_family;
   return Status::Ok();
@@ -86,8 +85,7 @@ Status TryWholePath(const SmoothingInputs& inputs, const HighAccuracyOptions& op
   SmoothingInputs other_way = inputs;
   other_way.initial_guess = &other_guess;
   WindowSolve other;
-  Status s = SmoothHighAccuracy(other_way, options, &other.poses, &other.report);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(SmoothHighAccuracy(other_way, options, &other.poses, &other.report));
   const int iterations = report->iterations + other.report.iterations;
   const double time_s = report->solve_time_s + other.report.solve_time_s;
   if (other.report.converged && other.report.final_cost < report->final_cost) {
@@ -116,9 +114,8 @@ Status TryWindow(const SmoothingInputs& inputs, const HighAccuracyOptions& optio
     turn_guess.poses[i - w.first].a_w = other_guess.poses[i].a_w;
   }
   WindowSolve keep, turn;
-  Status s = SolveWindow(inputs, options, w, keep_guess, &keep);
-  if (s.ok()) s = SolveWindow(inputs, options, w, turn_guess, &turn);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(SolveWindow(inputs, options, w, keep_guess, &keep));
+  RETURN_IF_ERROR(SolveWindow(inputs, options, w, turn_guess, &turn));
   report->iterations += keep.report.iterations + turn.report.iterations;
   report->solve_time_s += keep.report.solve_time_s + turn.report.solve_time_s;
   if (!keep.report.converged || !turn.report.converged) return Status::Ok();
@@ -174,14 +171,13 @@ Status SmoothBothWaysRoundPoles(const SmoothingInputs& inputs,
   int rerouted = 0, in_windows = 0;
   for (const PolePassage& passage : passages) {
     bool turned = false, windowed = false;
-    s = TryTheOtherWay(inputs, options, passage, out, report, &guess, &turned, &windowed);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(
+        TryTheOtherWay(inputs, options, passage, out, report, &guess, &turned, &windowed));
     rerouted += turned;
     in_windows += windowed;
   }
   if (in_windows > 0) {
-    s = EvaluateFinalCost(inputs, options, *out, report);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(EvaluateFinalCost(inputs, options, *out, report));
   }
   report->pole_passages = static_cast<int>(passages.size());
   report->pole_passages_rerouted = rerouted;

@@ -387,9 +387,12 @@ HighAccuracyOptions HighAccuracyOptions::SurfaceFree() {
   return options;
 }
 
-Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
-                    SmoothingState* state, ceres::Problem* problem) {
-  CHECK(in.input && in.cutter && in.machine && state && problem);
+namespace {
+
+// BuildProblem's first stage: the guess's joints as the parameters, and the
+// parameters s (mm) and t (s) of every pose.
+Status InitialState(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                    SmoothingState* state) {
   const ToolPath& guess = in.initial_guess ? *in.initial_guess : *in.input;
   const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
@@ -398,8 +401,7 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
                          " poses, the input " + std::to_string(n));
   }
   std::vector<JointVector> joints;
-  Status s = in.machine->AssignJoints(guess, &joints);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(in.machine->AssignJoints(guess, &joints));
   state->poses.resize(n);
   state->s_mm.assign(n, 0.0);
   state->t_s.assign(n, 0.0);
@@ -428,8 +430,14 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
     const double dt = SegmentTime(*in.machine, path, joints, i - 1, o.default_feed_mm_per_min);
     state->t_s[i] = state->t_s[i - 1] + std::max(dt, kMinStep);
   }
-  const double length_mm = std::max(state->s_mm.back(), kMinStep);
-  const std::vector<bool> free_pose = FreePoses(in);
+  return Status::Ok();
+}
+
+// One parameter block a pose: held poses constant, A of the free ones
+// within its travel.
+void AddPoseBlocks(const SmoothingInputs& in, const std::vector<bool>& free_pose,
+                   SmoothingState* state, ceres::Problem* problem) {
+  const size_t n = in.input->poses.size();
   const AxisLimits& a_travel = in.machine->limits[kA];
   for (size_t i = 0; i < n; ++i) {
     double* pose = state->poses[i].data();
@@ -443,17 +451,18 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
     if (std::isfinite(a_travel.min)) problem->SetParameterLowerBound(pose, kPoseA, a_travel.min);
     if (std::isfinite(a_travel.max)) problem->SetParameterUpperBound(pose, kPoseA, a_travel.max);
   }
-  if (in.surface == nullptr) {
-    AddToleranceFamily(in, o, length_mm, free_pose, state, problem);
-  } else {
-    AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
-  }
-  AddWallFamily(in, o, length_mm, free_pose, state, problem);
-  AddTolerancePoints(in, o, free_pose, state, problem);
+}
+
+// With a surface, each free pose's tip held at the input's overhang below
+// the floor (solver/smooth/cost/tip_height_cost.h).
+Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                          double length_mm, const std::vector<bool>& free_pose,
+                          SmoothingState* state, ceres::Problem* problem) {
+  const ToolPath& path = *in.input;
+  const size_t n = path.poses.size();
   std::vector<double> overhang_mm;
   if (in.surface != nullptr) {
-    s = PoseOverhangs(in.surface->rail(0), path, state->u, &overhang_mm);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(PoseOverhangs(in.surface->rail(0), path, state->u, &overhang_mm));
   }
   for (size_t i = 0; i < n; ++i) {
     if (!free_pose[i] || o.w_tip_height <= 0 || in.surface == nullptr) continue;
@@ -464,6 +473,14 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
                               std::sqrt(o.w_tip_height * h / length_mm) / o.tolerance_mm),
         nullptr, state->poses[i].data()));
   }
+  return Status::Ok();
+}
+
+// The second and third derivatives of the joints and the tip along s.
+void AddSmoothnessFamilies(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                           double length_mm, const std::vector<bool>& free_pose,
+                           SmoothingState* state, ceres::Problem* problem) {
+  const ToolPath& path = *in.input;
   // A family whose weights are all zero adds nothing but work: its zero
   // Jacobians still go through the linear algebra (more than half the
   // surface-free preset's solve, which sets w_third = 0).
@@ -479,6 +496,26 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
                                        o.w_tip_third);
     });
   }
+}
+
+}  // namespace
+
+Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
+                    SmoothingState* state, ceres::Problem* problem) {
+  CHECK(in.input && in.cutter && in.machine && state && problem);
+  RETURN_IF_ERROR(InitialState(in, o, state));
+  const double length_mm = std::max(state->s_mm.back(), kMinStep);
+  const std::vector<bool> free_pose = FreePoses(in);
+  AddPoseBlocks(in, free_pose, state, problem);
+  if (in.surface == nullptr) {
+    AddToleranceFamily(in, o, length_mm, free_pose, state, problem);
+  } else {
+    AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
+  }
+  AddWallFamily(in, o, length_mm, free_pose, state, problem);
+  AddTolerancePoints(in, o, free_pose, state, problem);
+  RETURN_IF_ERROR(AddTipHeightFamily(in, o, length_mm, free_pose, state, problem));
+  AddSmoothnessFamilies(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<1>(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<2>(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<3>(in, o, length_mm, free_pose, state, problem);
@@ -527,8 +564,7 @@ Status SmoothHighAccuracy(const SmoothingInputs& inputs, const HighAccuracyOptio
   distinct.input = &input;
   distinct.initial_guess = &guess;
   ToolPath solved;
-  Status s = SolveCoarseToFine(distinct, options, &solved, report);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(SolveCoarseToFine(distinct, options, &solved, report));
   *out = *inputs.input;
   for (size_t i = 0; i < out->poses.size(); ++i) {
     out->poses[i].p_w_tip = solved.poses[index[i]].p_w_tip;
@@ -544,8 +580,7 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
   const auto start = std::chrono::steady_clock::now();
   ceres::Problem problem;
   SmoothingState state;
-  Status s = BuildProblem(inputs, options, &state, &problem);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(BuildProblem(inputs, options, &state, &problem));
 
   ceres::Solver::Options solver_options;
   solver_options.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
@@ -595,7 +630,7 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
   // path, a level's excursion would surface later as an error about a pose
   // the input never had.
   std::vector<JointVector> joints;
-  s = inputs.machine->AssignJoints(*out, &joints);
+  Status s = inputs.machine->AssignJoints(*out, &joints);
   if (s.ok()) s = inputs.machine->CheckTravel(*out, joints);
   if (!s.ok()) {
     return Status::Error("a solve over " + std::to_string(out->poses.size()) +

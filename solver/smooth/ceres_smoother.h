@@ -111,8 +111,9 @@ struct HighAccuracyOptions {
   // On a path of more poses than this, each passage is tried the other way
   // in a window round it, not by solving the whole path again, so that its
   // cost does not grow with the path (0 = always the whole path). A window
-  // takes two solves of a few hundred poses where the whole path takes one:
-  // on the hypar they cost what a whole solve of ~2,500 poses does.
+  // takes two solves of a few hundred poses where the whole path takes one,
+  // so a window pays only on a long path (README, "Figures behind the
+  // defaults").
   int pole_window_path_poses = 5000;
   // Ceres' relative cost-change stop.
   double function_tolerance = 1e-6;

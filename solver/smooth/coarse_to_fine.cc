@@ -11,21 +11,9 @@
 namespace tpopt {
 namespace {
 
-// Tip arc length along `path`, each step at least `floor_mm` so that a
-// pose that only turns the axis still gets its own parameter.
-std::vector<double> TipArcLength(const ToolPath& path) {
-  const size_t n = path.poses.size();
-  std::vector<double> s(n, 0.0);
-  if (n < 2) return s;
-  double total = 0.0;
-  for (size_t i = 1; i < n; ++i) total += (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
-  const double floor_mm = std::max(1e-9, 1e-6 * total / static_cast<double>(n - 1));
-  for (size_t i = 1; i < n; ++i) {
-    const double ds = (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
-    s[i] = s[i - 1] + std::max(ds, floor_mm);
-  }
-  return s;
-}
+// The fine path's parameter: scaled to the path's own steps, so that the
+// floor stays far below any real move at every size of part.
+constexpr ArcLengthStepFloor kStationStepFloor = {1e-9, 1e-6};
 
 // `stations` with every held pose added (the first `held_first` and the
 // last `held_last` of n): a held pose must keep its guess at every level,
@@ -67,9 +55,9 @@ Status InterpolateStations(const ToolPath& fine, const std::vector<size_t>& stat
                            const ToolPath& coarse, const Machine& machine, ToolPath* out) {
   CHECK_EQ(stations.size(), coarse.poses.size());
   std::vector<JointVector> joints;
-  Status st = machine.AssignJoints(coarse, &joints);
-  if (!st.ok()) return st;
-  const std::vector<double> s = TipArcLength(fine);
+  RETURN_IF_ERROR(machine.AssignJoints(coarse, &joints));
+  const std::vector<double> s =
+      TipArcLength(fine.poses.data(), fine.poses.size(), kStationStepFloor);
   ToolPath result = fine;
   // Each run [first, last] of the fine path starts and ends at a station.
   for (size_t j = 0; j < stations.size();) {
@@ -83,8 +71,7 @@ Status InterpolateStations(const ToolPath& fine, const std::vector<size_t>& stat
     }
     if (members.size() >= 2) {
       PoseSpline spline;
-      st = PoseSpline::Fit(coarse, joints, members, knots, &spline);
-      if (!st.ok()) return st;
+      RETURN_IF_ERROR(PoseSpline::Fit(coarse, joints, members, knots, &spline));
       for (size_t i = stations[j]; i <= stations[k - 1]; ++i) spline.Evaluate(s[i], &result.poses[i]);
     }
     for (size_t m = j; m < k; ++m) {
@@ -130,10 +117,10 @@ Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOption
   coarse_options.function_tolerance = std::max(options.function_tolerance, 1e-4);
   ToolPath coarse_solved;
   HighAccuracyReport coarse_report;
-  Status s = SolveCoarseToFine(coarse, coarse_options, &coarse_solved, &coarse_report);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(SolveCoarseToFine(coarse, coarse_options, &coarse_solved, &coarse_report));
   ToolPath fine_guess;
-  s = InterpolateStations(*inputs.input, stations, coarse_solved, *inputs.machine, &fine_guess);
+  Status s =
+      InterpolateStations(*inputs.input, stations, coarse_solved, *inputs.machine, &fine_guess);
   if (!s.ok()) {
     return Status::Error("the coarse level over " + std::to_string(stations.size()) + " of " +
                          std::to_string(n) + " poses (the value is the solver's): " +
@@ -149,8 +136,7 @@ Status SolveCoarseToFine(const SmoothingInputs& inputs, const HighAccuracyOption
   refine.function_tolerance = std::max(options.function_tolerance, 1e-3);
   VLOG(1) << "high_accuracy: refining all " << n << " poses (at most " << refine.max_iterations
           << " iterations)";
-  s = SolveInWindows(fine, refine, out, report);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(SolveInWindows(fine, refine, out, report));
   report->iterations += coarse_report.iterations;
   report->converged = report->converged && coarse_report.converged;
   report->solve_time_s =

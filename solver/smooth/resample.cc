@@ -31,8 +31,7 @@ Status ResampleRun(const ToolPath& in, const std::vector<JointVector>& joints, s
     return Status::Ok();
   }
   PoseSpline fit;
-  Status st = PoseSpline::Fit(in, joints, kept, s, &fit);
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(PoseSpline::Fit(in, joints, kept, s, &fit));
   const int steps = std::max(1, static_cast<int>(std::ceil(s.back() / step_mm - 1e-9)));
   size_t source = 0;  // the kept pose at or after the sample, for its feed
   for (int j = 0; j <= steps; ++j) {
@@ -63,13 +62,11 @@ Status ResamplePath(const ToolPath& in, const Machine& machine, const ResampleOp
   std::string why;
   if (!options.IsValid(&why)) return Status::Error(why);
   std::vector<JointVector> joints;
-  Status st = machine.AssignJoints(in, &joints);
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(machine.AssignJoints(in, &joints));
   ToolPath result = WithoutPoses(in);
   for (size_t first = 0; first < in.poses.size();) {
     const size_t end = RunEnd(in, first);
-    st = ResampleRun(in, joints, first, end, options.step_mm, &result);
-    if (!st.ok()) return st;
+    RETURN_IF_ERROR(ResampleRun(in, joints, first, end, options.step_mm, &result));
     first = end;
   }
   *out = std::move(result);

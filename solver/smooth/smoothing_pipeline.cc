@@ -111,8 +111,7 @@ struct RunFigures {
 Status RunPeaks(const ToolPath& path, const Machine& machine, double default_feed_mm_per_min,
                 std::vector<RunFigures>* runs) {
   std::vector<JointVector> joints;
-  Status s = machine.AssignJoints(path, &joints);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(machine.AssignJoints(path, &joints));
   const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
   MotionOptions motion;
   motion.default_feed_mm_per_min = default_feed_mm_per_min;
@@ -212,18 +211,6 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
 using Evaluator = std::function<Status(const std::string& what, const ToolPath& path,
                                         PathMetrics* metrics)>;
 
-// Judges a path as the job's (its surface, cutter and machine) with
-// `*deviation` as it stands when called, telling settings.on_stage.
-Evaluator JudgeOf(const SmoothingJob& job, const SmoothingSettings& settings,
-                  const DeviationOptions* deviation) {
-  return [&job, &settings, deviation](const std::string& what, const ToolPath& path,
-                                      PathMetrics* metrics) {
-    if (settings.on_stage) settings.on_stage("evaluating " + what);
-    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, *deviation,
-                        settings.motion, metrics);
-  };
-}
-
 // High accuracy, a step after the solve and its tolerance check: the runs
 // the solve made worse on peak d2A/ds2 or d2C/ds2 go back as programmed
 // (KeepRunsNoWorse), so the mode never returns a program worse on either.
@@ -253,10 +240,9 @@ Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per
     const int kept = static_cast<int>(std::count(back.begin(), back.end(), true));
     if (kept == 0) return Status::Ok();
     PathMetrics metrics;
-    Status s = evaluate("the output with " + std::to_string(kept) + " runs kept as programmed",
-                        composed, &metrics);
-    if (s.ok()) s = WithinTravel(*job.machine, composed);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(evaluate("the output with " + std::to_string(kept) + " runs kept as programmed",
+                             composed, &metrics));
+    RETURN_IF_ERROR(WithinTravel(*job.machine, composed));
     if (tolerance_mm <= 0.0 || kept == static_cast<int>(back.size()) ||
         BeyondTolerance(*result->input_metrics.deviation, *metrics.deviation, tolerance_mm,
                         kSameMovesSlackMm)
@@ -305,17 +291,303 @@ std::vector<bool> RunsReaching(const RuledSurface& surface, const ToolPath& inpu
   return reach;
 }
 
-Status Fail(SmoothingFailure kind, const std::string& message, SmoothingFailure* failure) {
-  *failure = kind;
-  return Status::Error(message);
+
+// What the stages of one smoothing share: the job and its settings, the
+// result being filled, and the grid every path is judged on.
+struct SmoothingRun {
+  const SmoothingJob& job;
+  const SmoothingSettings& settings;
+  SmoothingResult* result;
+  // With judge_on_input_range every path is judged on one grid: the
+  // input's covered range (or the one asked for), never the range a
+  // smoothed path happens to cover.
+  DeviationOptions deviation;
+
+  void Stage(const std::string& name) const {
+    if (settings.on_stage) settings.on_stage(name);
+  }
+
+  Status Evaluate(const std::string& what, const ToolPath& path, PathMetrics* metrics) const {
+    Stage("evaluating " + what);
+    return EvaluatePath(path, *job.machine, job.surface, *job.cutter, deviation, settings.motion,
+                        metrics);
+  }
+
+  // Evaluate, as the Evaluator KeepSolvedRunsNoWorse asks for.
+  Evaluator Judge() const {
+    return [this](const std::string& what, const ToolPath& path, PathMetrics* metrics) {
+      return Evaluate(what, path, metrics);
+    };
+  }
+
+  // Resamples result->output if asked, evaluates it and holds it to the
+  // machine's travel.
+  Status FinishOutput() const {
+    if (settings.resample_step_mm > 0) {
+      Stage("resampling");
+      ResampleOptions resample;
+      resample.step_mm = settings.resample_step_mm;
+      Status r = ResamplePath(result->output, *job.machine, resample, &result->output);
+      if (!r.ok()) return Status::Error("resampling: " + r.message());
+    }
+    Status r = Evaluate("the output", result->output, &result->output_at_input_feed);
+    if (r.ok()) r = WithinTravel(*job.machine, result->output);
+    if (!r.ok()) {
+      return Status::SolverFailure("the smoothed path does not fit the machine (" + r.message() +
+                                   ")");
+    }
+    return Status::Ok();
+  }
+};
+
+// The input's metrics (fixing the judged range) and its travel.
+Status JudgeInput(SmoothingRun* run) {
+  const SmoothingJob& job = run->job;
+  SmoothingResult* result = run->result;
+  Status s = run->Evaluate("the input", *job.input, &result->input_metrics);
+  // (The range itself, not the grid's ends: u_min + (u_max - u_min) i / n
+  // can round past 1 at the last point.)
+  if (s.ok() && job.surface != nullptr && run->settings.judge_on_input_range &&
+      std::isnan(run->deviation.u_min)) {
+    CoveredRangeU(*job.surface, *job.input, &run->deviation.u_min, &run->deviation.u_max);
+  }
+  if (s.ok()) s = WithinTravel(*job.machine, *job.input);
+  if (!s.ok()) return Status::Error(s.message());
+  return Status::Ok();
+}
+
+// Without a surface the band around the program is the only measure of
+// accuracy, and the input is the one start known to lie inside it. With
+// one, the start is the spline path or the poses placed on the surface
+// at their own contacts (solver/smooth/surface_placement.h), whichever the
+// judge finds nearer the surface: a noisy CAM path's spline stays as far
+// off as the input (tenths of a millimetre), and the solve from there
+// ends in a local minimum. Sets result->initial_guess_metrics and
+// start_placed_on_surface; `placed` holds the placed poses.
+Status ChooseStart(const SmoothingRun& run, const ToolPath& spline_path, ToolPath* placed) {
+  const SmoothingJob& job = run.job;
+  SmoothingResult* result = run.result;
+  bool start_placed = false;
+  if (job.surface != nullptr) {
+    Status s = run.Evaluate("the spline start", spline_path, &result->initial_guess_metrics);
+    if (!s.ok()) return Status::SolverFailure("spline start: " + s.message());
+    run.Stage("placing the poses on the surface");
+    PathMetrics placed_metrics;
+    s = PlaceOnSurface(*job.input, *job.surface, *job.cutter, placed);
+    if (s.ok()) s = run.Evaluate("the placed start", *placed, &placed_metrics);
+    if (!s.ok()) return Status::SolverFailure("placement: " + s.message());
+    if (WorstDeviationMm(placed_metrics) < WorstDeviationMm(result->initial_guess_metrics)) {
+      start_placed = true;
+      result->initial_guess_metrics = std::move(placed_metrics);
+    }
+  } else {
+    Status s = run.Evaluate("the initial guess", *job.input, &result->initial_guess_metrics);
+    if (!s.ok()) return Status::Error(s.message());
+  }
+  result->start_placed_on_surface = start_placed;
+  return Status::Ok();
+}
+
+// The high-accuracy solve's state across its tolerance rounds and its
+// stiffer re-solves: what it starts from, the points held to the
+// tolerance, and what the last round left beyond when the runs that reach
+// it may go back as programmed instead of the path being refused.
+struct HeldSolve {
+  SmoothingInputs inputs;
+  bool held_to_tolerance = false;
+  std::vector<TolerancePoint> active;
+  std::string beyond_refusal;
+  std::vector<bool> beyond_runs;
+};
+
+// One solve, then again with the points it left beyond the tolerance held,
+// until none is. After kToleranceRounds what is still beyond is refused, or
+// with `may_put_back` noted in held->beyond_refusal and beyond_runs (the
+// runs that reach it) for the put-back to mend.
+Status SolveWithinTolerance(const SmoothingRun& run, const HighAccuracyOptions& solve_options,
+                            bool may_put_back, HeldSolve* held) {
+  const SmoothingJob& job = run.job;
+  SmoothingResult* result = run.result;
+  held->inputs.tolerance_points = &held->active;
+  for (int round = 0;; ++round) {
+    run.Stage(round == 0 ? "high_accuracy solve"
+                         : "high_accuracy solve, " + std::to_string(held->active.size()) +
+                               " points held to the tolerance");
+    // The input passed its checks above, so whatever the solve reports
+    // is the solver's failure, not the input's.
+    Status s = SmoothBothWaysRoundPoles(held->inputs, solve_options, &result->output,
+                                        &result->high_accuracy);
+    if (!s.ok()) {
+      return Status::SolverFailure("the high_accuracy solve failed: " + s.message());
+    }
+    if (!result->high_accuracy.converged) {
+      return Status::SolverFailure(
+          "the high_accuracy solve failed: Ceres found no usable solution (" +
+          result->high_accuracy.message + ")");
+    }
+    RETURN_IF_ERROR(run.FinishOutput());
+    result->solve_tolerance_mm = solve_options.tolerance_mm;
+    result->tolerance_rounds = round;
+    result->tolerance_points = static_cast<int>(held->active.size());
+    if (held->held_to_tolerance) {
+      const DeviationReport& in = *result->input_metrics.deviation;
+      const DeviationReport& out = *result->output_at_input_feed.deviation;
+      const std::vector<size_t> beyond = BeyondTolerance(in, out, solve_options.tolerance_mm);
+      if (!beyond.empty() && round == kToleranceRounds) {
+        double heaviest = 0.0;
+        for (const TolerancePoint& p : held->active) heaviest = std::max(heaviest, p.weight);
+        std::ostringstream why;
+        why << BeyondToleranceMessage(in, out, beyond, solve_options.tolerance_mm) << ", after "
+            << round << " rounds holding " << held->active.size()
+            << " points to the tolerance with penalties up to " << heaviest
+            << " times the surface's weight";
+        if (!may_put_back) return Status::SolverFailure(why.str());
+        held->beyond_refusal = why.str();
+        held->beyond_runs = RunsReaching(*job.surface, *job.input, out, beyond);
+        return Status::Ok();
+      }
+      if (!beyond.empty()) {
+        GrowActiveSet(out, beyond, &held->active);
+        continue;
+      }
+    }
+    return Status::Ok();
+  }
+}
+
+// A run the solve made worse on peak d2 than the input's would go back as
+// programmed by the put-back, and with it the input's deviation (up to 49 x
+// the clean DPO path's on the random cases, issue 16). First the solve is
+// repeated from its own result with the smoothness weights raised
+// kStifferFactor-fold, at most kStifferSolves times, each held to the
+// tolerance again; a stiffer solve that is refused leaves the last result
+// (and `*options` the weights it was solved with), and the put-back then
+// has the final word.
+void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSolve* held) {
+  const SmoothingJob& job = run.job;
+  const SmoothingSettings& settings = run.settings;
+  SmoothingResult* result = run.result;
+  constexpr int kStifferSolves = 2;
+  constexpr double kStifferFactor = 10.0;
+  ToolPath stiffer_start;
+  for (int k = 0; k < kStifferSolves && settings.keep_runs_no_worse && job.surface != nullptr &&
+                  settings.resample_step_mm <= 0 && held->beyond_runs.empty();
+       ++k) {
+    std::vector<bool> worse_runs;
+    ToolPath composed = result->output;
+    if (!KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
+                         NoWorseOn(), &composed, &worse_runs) ||
+        std::none_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; })) {
+      break;
+    }
+    const SmoothingResult kept = *result;
+    const std::vector<TolerancePoint> kept_active = held->active;
+    stiffer_start = result->output;
+    held->inputs.initial_guess = &stiffer_start;
+    HighAccuracyOptions stiffer = *options;
+    stiffer.w_second *= kStifferFactor;
+    stiffer.w_third *= kStifferFactor;
+    stiffer.w_tip_second *= kStifferFactor;
+    run.Stage("high_accuracy solve with stiffer smoothing (" + std::to_string(k + 1) + ")");
+    if (!SolveWithinTolerance(run, stiffer, /*may_put_back=*/false, held).ok()) {
+      *result = kept;
+      held->active = kept_active;
+      break;
+    }
+    *options = stiffer;
+    ++result->stiffer_solves;
+  }
+}
+
+// High-accuracy mode after the spline method: the start, the solve held to
+// the tolerance (and stiffer re-solves), then the runs it made worse put
+// back, and what that cannot mend refused. `guess_out`, if not null,
+// receives the solve's starting path.
+Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& spline_path,
+                         ToolPath* guess_out) {
+  const SmoothingJob& job = run.job;
+  const SmoothingSettings& settings = run.settings;
+  SmoothingResult* result = run.result;
+  ToolPath placed;
+  RETURN_IF_ERROR(ChooseStart(run, spline_path, &placed));
+  const bool start_placed = result->start_placed_on_surface;
+  const ToolPath& guess =
+      job.surface == nullptr ? *job.input : start_placed ? placed : spline_path;
+  if (guess_out != nullptr) *guess_out = guess;
+  HeldSolve held;
+  held.inputs = {job.input, &guess, job.surface, job.cutter, job.machine};
+  held.held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
+  HighAccuracyOptions options = settings.high_accuracy;
+  options.interpolation = settings.deviation.interpolation;
+  // Where the input was within the tolerance and a few grid points of the
+  // solve's best stay beyond it, the runs that reach them go back as
+  // programmed (below, with their neighbours if the mix still breaks it),
+  // so the promise holds; only what that cannot mend is refused.
+  RETURN_IF_ERROR(SolveWithinTolerance(run, options, /*may_put_back=*/true, &held));
+  SolveStiffer(run, &options, &held);
+  const bool held_to_tolerance = held.held_to_tolerance;
+  // The path to be returned. Held to the tolerance it leaves no grid
+  // point beyond both the tolerance and the input, a pointwise promise
+  // that the start, itself beyond the tolerance where a noisy input
+  // happened to be within it, need not keep: judged against the start's
+  // max |dev| alone, a solve that met it was refused. So there it is worse
+  // only when it breaks more axis limits than the start and the input and
+  // is not nearer the surface than the start.
+  const auto worse_than_start = [&]() {
+    const PathMetrics& out_metrics = result->output_at_input_feed;
+    const PathMetrics& start_metrics = result->initial_guess_metrics;
+    return IsWorseThan(out_metrics, start_metrics) &&
+           (!held_to_tolerance ||
+            out_metrics.motion.limit_violations >
+                std::max(start_metrics.motion.limit_violations,
+                         result->input_metrics.motion.limit_violations));
+  };
+  // A worse result is not refused for limits the input kept: the runs
+  // that break more limits than the input's go back as programmed, with
+  // the d2 rule below (at worst the whole input, which is never worse
+  // than itself); only what is still worse then is refused.
+  NoWorseOn no_worse;
+  no_worse.d2 = settings.keep_runs_no_worse;
+  no_worse.limits = worse_than_start();
+  if (no_worse.d2 || no_worse.limits || !held.beyond_runs.empty()) {
+    Status s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min, no_worse,
+                                     held_to_tolerance ? options.tolerance_mm : 0.0, run.Judge(),
+                                     held.beyond_runs, result);
+    if (!s.ok()) {
+      return Status::SolverFailure(
+          "the smoothed path with runs kept as programmed does not fit the machine (" +
+          s.message() + ")");
+    }
+  }
+  if (!held.beyond_refusal.empty() &&
+      !BeyondTolerance(*result->input_metrics.deviation, *result->output_at_input_feed.deviation,
+                       options.tolerance_mm, kSameMovesSlackMm)
+           .empty()) {
+    return Status::SolverFailure(held.beyond_refusal);
+  }
+  if (worse_than_start()) {
+    const PathMetrics& out_metrics = result->output_at_input_feed;
+    std::ostringstream why;
+    why << (held_to_tolerance
+                ? "the optimised path breaks more axis limits than its starting point "
+                  "and the input, and is no nearer the surface than its start (try "
+                  "other weights)"
+                : "the optimised path is worse than its starting point on deviation "
+                  "and limits (try other weights)")
+        << ": " << out_metrics.motion.limit_violations << " limit violations against "
+        << result->initial_guess_metrics.motion.limit_violations << " (start) and "
+        << result->input_metrics.motion.limit_violations << " (input), worst at pose "
+        << out_metrics.motion.worst_violation_pose;
+    return Status::SolverFailure(why.str());
+  }
+  return Status::Ok();
 }
 
 // Everything RunSmoothing does but the feed schedule, with one cutter for
 // the whole path; `guess_out`, if not null, receives the high-accuracy
 // solve's starting path (the input in spline mode).
 Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& settings,
-                           SmoothingResult* result, SmoothingFailure* failure,
-                           ToolPath* guess_out) {
+                           SmoothingResult* result, ToolPath* guess_out) {
   if (guess_out != nullptr) *guess_out = *job.input;
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
   const auto& poses = job.input->poses;
@@ -324,28 +596,11 @@ Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& set
   const bool cuts =
       std::any_of(second, poses.end(), [](const ToolPose& p) { return !IsPositioningMove(p); });
   if (!feeds) {
-    return Fail(SmoothingFailure::kBadInput,
-                "the path has no cutting move to smooth (" + std::to_string(poses.size()) +
-                    " poses)",
-                failure);
+    return Status::Error("the path has no cutting move to smooth (" + std::to_string(poses.size()) +
+                         " poses)");
   }
-  auto stage = [&](const std::string& name) {
-    if (settings.on_stage) settings.on_stage(name);
-  };
-  // With judge_on_input_range every path is judged on one grid: the
-  // input's covered range (or the one asked for), never the range a
-  // smoothed path happens to cover.
-  DeviationOptions deviation = settings.deviation;
-  const Evaluator evaluate = JudgeOf(job, settings, &deviation);
-  Status s = evaluate("the input", *job.input, &result->input_metrics);
-  // (The range itself, not the grid's ends: u_min + (u_max - u_min) i / n
-  // can round past 1 at the last point.)
-  if (s.ok() && job.surface != nullptr && settings.judge_on_input_range &&
-      std::isnan(deviation.u_min)) {
-    CoveredRangeU(*job.surface, *job.input, &deviation.u_min, &deviation.u_max);
-  }
-  if (s.ok()) s = WithinTravel(*job.machine, *job.input);
-  if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+  SmoothingRun run{job, settings, result, settings.deviation};
+  RETURN_IF_ERROR(JudgeInput(&run));
   if (!cuts) {
     // Every feed move is one to keep as programmed (held, such as a
     // program of pure rotary moves, or a link): the program goes out as it
@@ -358,31 +613,13 @@ Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& set
   const SplineSmootherOptions spline_options =
       high_accuracy ? ForHighAccuracyGuess(settings.spline) : settings.spline;
   ToolPath spline_path;
-  stage("spline smoothing");
-  s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
-                        &spline_path, &result->spline);
+  run.Stage("spline smoothing");
+  Status s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
+                               &spline_path, &result->spline);
   // The input was read and fits the machine: a method that fails on it fails
   // as a solver.
-  if (!s.ok()) return Fail(SmoothingFailure::kSolver, "spline smoothing: " + s.message(), failure);
+  if (!s.ok()) return Status::SolverFailure("spline smoothing: " + s.message());
 
-  // Resamples result->output if asked, evaluates it and holds it to the
-  // machine's travel.
-  auto finish_output = [&]() {
-    if (settings.resample_step_mm > 0) {
-      stage("resampling");
-      ResampleOptions resample;
-      resample.step_mm = settings.resample_step_mm;
-      Status r = ResamplePath(result->output, *job.machine, resample, &result->output);
-      if (!r.ok()) return Fail(SmoothingFailure::kBadInput, "resampling: " + r.message(), failure);
-    }
-    Status r = evaluate("the output", result->output, &result->output_at_input_feed);
-    if (r.ok()) r = WithinTravel(*job.machine, result->output);
-    if (!r.ok()) {
-      return Fail(SmoothingFailure::kSolver,
-                  "the smoothed path does not fit the machine (" + r.message() + ")", failure);
-    }
-    return Status::Ok();
-  };
   if (!high_accuracy) {
     result->output = std::move(spline_path);
     std::vector<bool> back;
@@ -391,200 +628,9 @@ Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& set
                         NoWorseOn(), &result->output, &back)) {
       result->runs_kept_as_input = static_cast<int>(std::count(back.begin(), back.end(), true));
     }
-    s = finish_output();
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(run.FinishOutput());
   } else {
-    // Without a surface the band around the program is the only measure of
-    // accuracy, and the input is the one start known to lie inside it. With
-    // one, the start is the spline path or the poses placed on the surface
-    // at their own contacts (solver/smooth/surface_placement.h), whichever the
-    // judge finds nearer the surface: a noisy CAM path's spline stays as far
-    // off as the input (tenths of a millimetre), and the solve from there
-    // ends in a local minimum.
-    ToolPath placed;
-    bool start_placed = false;
-    if (job.surface != nullptr) {
-      s = evaluate("the spline start", spline_path, &result->initial_guess_metrics);
-      if (!s.ok()) return Fail(SmoothingFailure::kSolver, "spline start: " + s.message(), failure);
-      stage("placing the poses on the surface");
-      PathMetrics placed_metrics;
-      s = PlaceOnSurface(*job.input, *job.surface, *job.cutter, &placed);
-      if (s.ok()) s = evaluate("the placed start", placed, &placed_metrics);
-      if (!s.ok()) return Fail(SmoothingFailure::kSolver, "placement: " + s.message(), failure);
-      if (WorstDeviationMm(placed_metrics) < WorstDeviationMm(result->initial_guess_metrics)) {
-        start_placed = true;
-        result->initial_guess_metrics = std::move(placed_metrics);
-      }
-    } else {
-      s = evaluate("the initial guess", *job.input, &result->initial_guess_metrics);
-      if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
-    }
-    result->start_placed_on_surface = start_placed;
-    const ToolPath& guess =
-        job.surface == nullptr ? *job.input : start_placed ? placed : spline_path;
-    if (guess_out != nullptr) *guess_out = guess;
-    std::vector<TolerancePoint> active;
-    SmoothingInputs inputs{job.input, &guess, job.surface, job.cutter, job.machine};
-    inputs.tolerance_points = &active;
-    HighAccuracyOptions options = settings.high_accuracy;
-    options.interpolation = settings.deviation.interpolation;
-    const bool held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
-    // One solve, then again with the points it left beyond the tolerance
-    // held, until none is (or refused).
-    // What the last tolerance round left beyond when the runs that reach
-    // it may go back as programmed instead of the path being refused.
-    std::string beyond_refusal;
-    std::vector<bool> beyond_runs;
-    const auto solve_held = [&](const HighAccuracyOptions& solve_options,
-                                bool may_put_back) -> Status {
-      for (int round = 0;; ++round) {
-        stage(round == 0 ? "high_accuracy solve"
-                         : "high_accuracy solve, " + std::to_string(active.size()) +
-                               " points held to the tolerance");
-        // The input passed its checks above, so whatever the solve reports
-        // is the solver's failure, not the input's.
-        s = SmoothBothWaysRoundPoles(inputs, solve_options, &result->output,
-                                     &result->high_accuracy);
-        if (!s.ok()) {
-          return Fail(SmoothingFailure::kSolver, "the high_accuracy solve failed: " + s.message(),
-                      failure);
-        }
-        if (!result->high_accuracy.converged) {
-          return Fail(SmoothingFailure::kSolver,
-                      "the high_accuracy solve failed: Ceres found no usable solution (" +
-                          result->high_accuracy.message + ")",
-                      failure);
-        }
-        s = finish_output();
-        if (!s.ok()) return s;
-        result->solve_tolerance_mm = solve_options.tolerance_mm;
-        result->tolerance_rounds = round;
-        result->tolerance_points = static_cast<int>(active.size());
-        if (held_to_tolerance) {
-          const DeviationReport& in = *result->input_metrics.deviation;
-          const DeviationReport& out = *result->output_at_input_feed.deviation;
-          const std::vector<size_t> beyond = BeyondTolerance(in, out, solve_options.tolerance_mm);
-          if (!beyond.empty() && round == kToleranceRounds) {
-            double heaviest = 0.0;
-            for (const TolerancePoint& p : active) heaviest = std::max(heaviest, p.weight);
-            std::ostringstream why;
-            why << BeyondToleranceMessage(in, out, beyond, solve_options.tolerance_mm)
-                << ", after " << round << " rounds holding " << active.size()
-                << " points to the tolerance with penalties up to " << heaviest
-                << " times the surface's weight";
-            if (!may_put_back) return Fail(SmoothingFailure::kSolver, why.str(), failure);
-            beyond_refusal = why.str();
-            beyond_runs = RunsReaching(*job.surface, *job.input, out, beyond);
-            return Status::Ok();
-          }
-          if (!beyond.empty()) {
-            GrowActiveSet(out, beyond, &active);
-            continue;
-          }
-        }
-        return Status::Ok();
-      }
-    };
-    // Where the input was within the tolerance and a few grid points of the
-    // solve's best stay beyond it, the runs that reach them go back as
-    // programmed (below, with their neighbours if the mix still breaks it),
-    // so the promise holds; only what that cannot mend is refused.
-    s = solve_held(options, /*may_put_back=*/true);
-    if (!s.ok()) return s;
-    // A run the solve made worse on peak d2 than the input's would go back
-    // as programmed below, and with it the input's deviation (up to 49 x the
-    // clean DPO path's on the random cases, issue 16). First the solve is
-    // repeated from its own result with the smoothness weights raised
-    // kStifferFactor-fold, at most kStifferSolves times, each held to the
-    // tolerance again; a stiffer solve that is refused leaves the last
-    // result, and the put-back then has the final word.
-    constexpr int kStifferSolves = 2;
-    constexpr double kStifferFactor = 10.0;
-    ToolPath stiffer_start;
-    for (int k = 0; k < kStifferSolves && settings.keep_runs_no_worse && job.surface != nullptr &&
-                    settings.resample_step_mm <= 0 && beyond_runs.empty();
-         ++k) {
-      std::vector<bool> worse_runs;
-      ToolPath composed = result->output;
-      if (!KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
-                           NoWorseOn(), &composed, &worse_runs) ||
-          std::none_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; })) {
-        break;
-      }
-      const SmoothingResult kept = *result;
-      const std::vector<TolerancePoint> kept_active = active;
-      stiffer_start = result->output;
-      inputs.initial_guess = &stiffer_start;
-      HighAccuracyOptions stiffer = options;
-      stiffer.w_second *= kStifferFactor;
-      stiffer.w_third *= kStifferFactor;
-      stiffer.w_tip_second *= kStifferFactor;
-      stage("high_accuracy solve with stiffer smoothing (" + std::to_string(k + 1) + ")");
-      if (!solve_held(stiffer, /*may_put_back=*/false).ok()) {
-        *result = kept;
-        active = kept_active;
-        *failure = SmoothingFailure::kNone;
-        break;
-      }
-      options = stiffer;
-      ++result->stiffer_solves;
-    }
-    // The path to be returned. Held to the tolerance it leaves no grid
-    // point beyond both the tolerance and the input, a pointwise promise
-    // that the start, itself beyond the tolerance where a noisy input
-    // happened to be within it, need not keep: judged against the start's
-    // max |dev| alone, a solve that met it was refused. So there it is worse
-    // only when it breaks more axis limits than the start and the input and
-    // is not nearer the surface than the start.
-    const auto worse_than_start = [&]() {
-      const PathMetrics& out_metrics = result->output_at_input_feed;
-      const PathMetrics& start_metrics = result->initial_guess_metrics;
-      return IsWorseThan(out_metrics, start_metrics) &&
-             (!held_to_tolerance ||
-              out_metrics.motion.limit_violations >
-                  std::max(start_metrics.motion.limit_violations,
-                           result->input_metrics.motion.limit_violations));
-    };
-    // A worse result is not refused for limits the input kept: the runs
-    // that break more limits than the input's go back as programmed, with
-    // the d2 rule below (at worst the whole input, which is never worse
-    // than itself); only what is still worse then is refused.
-    NoWorseOn no_worse;
-    no_worse.d2 = settings.keep_runs_no_worse;
-    no_worse.limits = worse_than_start();
-    if (no_worse.d2 || no_worse.limits || !beyond_runs.empty()) {
-      s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min, no_worse,
-                                held_to_tolerance ? options.tolerance_mm : 0.0, evaluate,
-                                beyond_runs, result);
-    }
-    if (!s.ok()) {
-      return Fail(SmoothingFailure::kSolver,
-                  "the smoothed path with runs kept as programmed does not fit the machine (" +
-                      s.message() + ")",
-                  failure);
-    }
-    if (!beyond_refusal.empty() &&
-        !BeyondTolerance(*result->input_metrics.deviation,
-                         *result->output_at_input_feed.deviation, options.tolerance_mm,
-                         kSameMovesSlackMm)
-             .empty()) {
-      return Fail(SmoothingFailure::kSolver, beyond_refusal, failure);
-    }
-    if (worse_than_start()) {
-      const PathMetrics& out_metrics = result->output_at_input_feed;
-      std::ostringstream why;
-      why << (held_to_tolerance
-                  ? "the optimised path breaks more axis limits than its starting point "
-                    "and the input, and is no nearer the surface than its start (try "
-                    "other weights)"
-                  : "the optimised path is worse than its starting point on deviation "
-                    "and limits (try other weights)")
-          << ": " << out_metrics.motion.limit_violations << " limit violations against "
-          << result->initial_guess_metrics.motion.limit_violations << " (start) and "
-          << result->input_metrics.motion.limit_violations << " (input), worst at pose "
-          << out_metrics.motion.worst_violation_pose;
-      return Fail(SmoothingFailure::kSolver, why.str(), failure);
-    }
+    RETURN_IF_ERROR(SolveHighAccuracy(run, spline_path, guess_out));
   }
   result->output_metrics = result->output_at_input_feed;
   return Status::Ok();
@@ -602,6 +648,75 @@ bool SameCutter(const Cutter& a, const Cutter& b) {
          a.taper_rad == b.taper_rad;
 }
 
+// `s` with `prefix` before its message; the code (whose fault) is kept.
+Status Prefixed(const std::string& prefix, const Status& s) {
+  switch (s.code()) {
+    case StatusCode::kOk:
+      return s;
+    case StatusCode::kSolver:
+      return Status::SolverFailure(prefix + s.message());
+    case StatusCode::kUsage:
+      return Status::Usage(prefix + s.message());
+    case StatusCode::kIo:
+      return Status::IoError(prefix + s.message());
+    case StatusCode::kBadInput:
+      break;
+  }
+  return Status::Error(prefix + s.message());
+}
+
+// Where the cutter changes: the first pose of each piece of one cutter,
+// with input.poses.size() last. A change inside a cutting run is the
+// input's fault.
+Status ToolPieces(const SmoothingJob& job, std::vector<size_t>* first) {
+  const ToolPath& input = *job.input;
+  *first = {0};
+  for (size_t i = 1; i < input.poses.size(); ++i) {
+    if (SameCutter(CutterOf(input, input.poses[i], *job.cutter),
+                   CutterOf(input, input.poses[i - 1], *job.cutter))) {
+      continue;
+    }
+    if (!IsPositioningMove(input.poses[i])) {
+      return Status::Error("pose " + std::to_string(i) + " (line " +
+                           std::to_string(input.poses[i].source_line) +
+                           ") changes the cutter inside a cutting run");
+    }
+    first->push_back(i);
+  }
+  first->push_back(input.poses.size());
+  return Status::Ok();
+}
+
+// Adds a tool piece's reports to the whole path's.
+void AddPieceReports(const SmoothingResult& part, bool feeds, bool high_accuracy,
+                     SmoothingResult* result) {
+  result->runs_kept_as_input += part.runs_kept_as_input;
+  result->tolerance_rounds = std::max(result->tolerance_rounds, part.tolerance_rounds);
+  result->tolerance_points += part.tolerance_points;
+  result->solve_tolerance_mm = std::max(result->solve_tolerance_mm, part.solve_tolerance_mm);
+  result->start_placed_on_surface |= part.start_placed_on_surface;
+  SplineSmootherReport& sp = result->spline;
+  sp.zones += part.spline.zones;
+  sp.poses_in_zones += part.spline.poses_in_zones;
+  sp.poses_inserted += part.spline.poses_inserted;
+  sp.max_angle_change_deg = std::max(sp.max_angle_change_deg, part.spline.max_angle_change_deg);
+  sp.pole_crossings += part.spline.pole_crossings;
+  if (!feeds) return;
+  HighAccuracyReport& ha = result->high_accuracy;
+  const HighAccuracyReport& h = part.high_accuracy;
+  ha.converged = ha.converged && (h.converged || !high_accuracy);
+  if (!h.message.empty()) ha.message = h.message;
+  ha.iterations += h.iterations;
+  ha.solve_time_s += h.solve_time_s;
+  ha.initial_cost += h.initial_cost;
+  ha.final_cost += h.final_cost;
+  for (const auto& [family, cost] : h.final_cost_by_family) ha.final_cost_by_family[family] += cost;
+  ha.poses_clamped += h.poses_clamped;
+  ha.pole_passages += h.pole_passages;
+  ha.pole_passages_rerouted += h.pole_passages_rerouted;
+  ha.pole_passages_in_windows += h.pole_passages_in_windows;
+}
+
 // Each move cut by its own tool's cutter (settings.deviation.cutter_per_tool):
 // the path is cut into pieces of one cutter each, at the tool changes,
 // which are moves kept as programmed (runs never cross them). Each piece is
@@ -610,39 +725,18 @@ bool SameCutter(const Cutter& a, const Cutter& b) {
 // whole-path smoothing keeps it (the pose before a kept move); the pieces'
 // outputs are joined and the whole judged with each move's own cutter.
 Status SmoothToolByTool(const SmoothingJob& job, const SmoothingSettings& settings,
-                        SmoothingResult* result, SmoothingFailure* failure) {
+                        SmoothingResult* result) {
   const ToolPath& input = *job.input;
-  std::vector<size_t> first = {0};
-  for (size_t i = 1; i < input.poses.size(); ++i) {
-    if (SameCutter(CutterOf(input, input.poses[i], *job.cutter),
-                   CutterOf(input, input.poses[i - 1], *job.cutter))) {
-      continue;
-    }
-    if (!IsPositioningMove(input.poses[i])) {
-      return Fail(SmoothingFailure::kBadInput,
-                  "pose " + std::to_string(i) + " (line " +
-                      std::to_string(input.poses[i].source_line) +
-                      ") changes the cutter inside a cutting run",
-                  failure);
-    }
-    first.push_back(i);
-  }
-  if (first.size() == 1) return SmoothWithOneCutter(job, settings, result, failure, nullptr);
-  first.push_back(input.poses.size());
+  std::vector<size_t> first;
+  RETURN_IF_ERROR(ToolPieces(job, &first));
+  if (first.size() == 2) return SmoothWithOneCutter(job, settings, result, nullptr);
 
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
-  DeviationOptions deviation = settings.deviation;
-  const Evaluator evaluate = JudgeOf(job, settings, &deviation);
-  Status s = evaluate("the input", input, &result->input_metrics);
-  if (s.ok() && settings.judge_on_input_range && std::isnan(deviation.u_min)) {
-    CoveredRangeU(*job.surface, input, &deviation.u_min, &deviation.u_max);
-  }
-  if (s.ok()) s = WithinTravel(*job.machine, input);
-  if (!s.ok()) return Fail(SmoothingFailure::kBadInput, s.message(), failure);
+  SmoothingRun run{job, settings, result, settings.deviation};
+  RETURN_IF_ERROR(JudgeInput(&run));
 
   ToolPath output = WithoutPoses(input), guesses = WithoutPoses(input);
-  HighAccuracyReport& ha = result->high_accuracy;
-  ha.converged = true;
+  result->high_accuracy.converged = true;
   for (size_t k = 0; k + 1 < first.size(); ++k) {
     const bool last = k + 2 == first.size();
     ToolPath piece = WithoutPoses(input);
@@ -665,13 +759,13 @@ Status SmoothToolByTool(const SmoothingJob& job, const SmoothingSettings& settin
     const bool feeds = std::any_of(piece.poses.begin() + 1, piece.poses.end(),
                                    [](const ToolPose& p) { return !p.rapid; });
     if (feeds) {
-      s = SmoothWithOneCutter({&piece, job.surface, &cutter, job.machine}, one, &part, failure,
-                              &guess);
+      Status s = SmoothWithOneCutter({&piece, job.surface, &cutter, job.machine}, one, &part,
+                                     &guess);
       if (!s.ok()) {
         std::ostringstream what;
         what << "the moves cut with the cutter of D " << 2 * cutter.radius_mm << " mm (from line "
-             << input.poses[first[k]].source_line << "): " << s.message();
-        return Status::Error(what.str());
+             << input.poses[first[k]].source_line << "): ";
+        return Prefixed(what.str(), s);
       }
     } else {
       part.output = guess = piece;
@@ -680,85 +774,64 @@ Status SmoothToolByTool(const SmoothingJob& job, const SmoothingSettings& settin
       // The next piece's first pose, kept as programmed: it starts that
       // piece's output.
       if (part.output.poses.empty() || !IsPositioningMove(part.output.poses.back())) {
-        return Fail(SmoothingFailure::kSolver,
-                    "the smoothed stretch of a tool does not end at the next tool's first pose",
-                    failure);
+        return Status::SolverFailure(
+            "the smoothed stretch of a tool does not end at the next tool's first pose");
       }
       part.output.poses.pop_back();
       guess.poses.pop_back();
     }
     output.poses.insert(output.poses.end(), part.output.poses.begin(), part.output.poses.end());
     guesses.poses.insert(guesses.poses.end(), guess.poses.begin(), guess.poses.end());
-    result->runs_kept_as_input += part.runs_kept_as_input;
-    result->tolerance_rounds = std::max(result->tolerance_rounds, part.tolerance_rounds);
-    result->tolerance_points += part.tolerance_points;
-    result->solve_tolerance_mm = std::max(result->solve_tolerance_mm, part.solve_tolerance_mm);
-    result->start_placed_on_surface |= part.start_placed_on_surface;
-    SplineSmootherReport& sp = result->spline;
-    sp.zones += part.spline.zones;
-    sp.poses_in_zones += part.spline.poses_in_zones;
-    sp.poses_inserted += part.spline.poses_inserted;
-    sp.max_angle_change_deg = std::max(sp.max_angle_change_deg, part.spline.max_angle_change_deg);
-    sp.pole_crossings += part.spline.pole_crossings;
-    if (!feeds) continue;
-    const HighAccuracyReport& h = part.high_accuracy;
-    ha.converged = ha.converged && (h.converged || !high_accuracy);
-    if (!h.message.empty()) ha.message = h.message;
-    ha.iterations += h.iterations;
-    ha.solve_time_s += h.solve_time_s;
-    ha.initial_cost += h.initial_cost;
-    ha.final_cost += h.final_cost;
-    for (const auto& [family, cost] : h.final_cost_by_family) ha.final_cost_by_family[family] += cost;
-    ha.poses_clamped += h.poses_clamped;
-    ha.pole_passages += h.pole_passages;
-    ha.pole_passages_rerouted += h.pole_passages_rerouted;
-    ha.pole_passages_in_windows += h.pole_passages_in_windows;
+    AddPieceReports(part, feeds, high_accuracy, result);
   }
   result->output = std::move(output);
-  s = evaluate("the output", result->output, &result->output_at_input_feed);
+  Status s = run.Evaluate("the output", result->output, &result->output_at_input_feed);
   if (s.ok()) s = WithinTravel(*job.machine, result->output);
   if (!s.ok()) {
-    return Fail(SmoothingFailure::kSolver,
-                "the smoothed path does not fit the machine (" + s.message() + ")", failure);
+    return Status::SolverFailure("the smoothed path does not fit the machine (" + s.message() +
+                                 ")");
   }
   if (high_accuracy) {
-    s = evaluate("the starting path", guesses, &result->initial_guess_metrics);
-    if (!s.ok()) return Fail(SmoothingFailure::kSolver, "start: " + s.message(), failure);
+    s = run.Evaluate("the starting path", guesses, &result->initial_guess_metrics);
+    if (!s.ok()) return Status::SolverFailure("start: " + s.message());
   }
   result->output_metrics = result->output_at_input_feed;
+  return Status::Ok();
+}
+
+// The feed scheduled on the output (raised feeds held to the input's own
+// peaks), and the output's metrics as written.
+Status ScheduleOutputFeed(const SmoothingRun& run) {
+  const SmoothingJob& job = run.job;
+  SmoothingResult* result = run.result;
+  std::vector<JointVector> joints;
+  run.Stage("scheduling the feed");
+  Status s = job.machine->AssignJoints(result->output, &joints);
+  FeedScheduleOptions feed = run.settings.feed;
+  for (int a = 0; a < 5; ++a) {  // what raised feeds may ask of each axis at most
+    feed.input_peak_acceleration[a] = result->input_metrics.motion.axes[a].peak_acceleration;
+    feed.input_peak_jerk[a] = result->input_metrics.motion.axes[a].peak_jerk;
+  }
+  if (s.ok()) s = ScheduleFeed(*job.machine, joints, feed, &result->output, &result->feed);
+  if (s.ok()) s = run.Evaluate("the output as written", result->output, &result->output_metrics);
+  if (!s.ok()) return Status::SolverFailure("feed scheduling: " + s.message());
   return Status::Ok();
 }
 
 }  // namespace
 
 Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
-                    SmoothingResult* result, SmoothingFailure* failure) {
-  CHECK(job.input && job.cutter && job.machine && result && failure);
-  *failure = SmoothingFailure::kNone;
-  Status s = settings.deviation.cutter_per_tool && job.surface != nullptr
-                 ? SmoothToolByTool(job, settings, result, failure)
-                 : SmoothWithOneCutter(job, settings, result, failure, nullptr);
-  if (!s.ok() || !settings.schedule_feed) return s;
-  auto stage = [&](const std::string& name) {
-    if (settings.on_stage) settings.on_stage(name);
-  };
-  DeviationOptions deviation = settings.deviation;
-  if (job.surface != nullptr && settings.judge_on_input_range && std::isnan(deviation.u_min)) {
-    CoveredRangeU(*job.surface, *job.input, &deviation.u_min, &deviation.u_max);
+                    SmoothingResult* result) {
+  CHECK(job.input && job.cutter && job.machine && result);
+  RETURN_IF_ERROR(settings.deviation.cutter_per_tool && job.surface != nullptr
+                      ? SmoothToolByTool(job, settings, result)
+                      : SmoothWithOneCutter(job, settings, result, nullptr));
+  if (!settings.schedule_feed) return Status::Ok();
+  SmoothingRun run{job, settings, result, settings.deviation};
+  if (job.surface != nullptr && settings.judge_on_input_range && std::isnan(run.deviation.u_min)) {
+    CoveredRangeU(*job.surface, *job.input, &run.deviation.u_min, &run.deviation.u_max);
   }
-  const Evaluator evaluate = JudgeOf(job, settings, &deviation);
-  std::vector<JointVector> joints;
-  stage("scheduling the feed");
-  s = job.machine->AssignJoints(result->output, &joints);
-  FeedScheduleOptions feed = settings.feed;
-  for (int a = 0; a < 5; ++a) {  // what raised feeds may ask of each axis at most
-    feed.input_peak_acceleration[a] = result->input_metrics.motion.axes[a].peak_acceleration;
-    feed.input_peak_jerk[a] = result->input_metrics.motion.axes[a].peak_jerk;
-  }
-  if (s.ok()) s = ScheduleFeed(*job.machine, joints, feed, &result->output, &result->feed);
-  if (s.ok()) s = evaluate("the output as written", result->output, &result->output_metrics);
-  if (!s.ok()) return Fail(SmoothingFailure::kSolver, "feed scheduling: " + s.message(), failure);
-  return Status::Ok();
+  return ScheduleOutputFeed(run);
 }
 
 }  // namespace tpopt

@@ -106,12 +106,12 @@ struct SmoothingResult {
   FeedScheduleReport feed;
 };
 
-// What went wrong, for the caller's exit code.
-enum class SmoothingFailure { kNone, kBadInput, kSolver };
-
-// Runs the job; on failure `result->output` must not be written.
+// Runs the job; on failure `result->output` must not be written. The
+// status's code says whose fault a failure is: kBadInput for an input the
+// pipeline cannot smooth (no cutting move, outside the travel), kSolver for
+// a method that found no acceptable result on an input that passed.
 Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
-                    SmoothingResult* result, SmoothingFailure* failure);
+                    SmoothingResult* result);
 
 }  // namespace tpopt
 

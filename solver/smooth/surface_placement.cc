@@ -26,8 +26,7 @@ Status PlaceOnSurface(const ToolPath& input, const RuledSurface& surface, const 
   const size_t n = input.poses.size();
   const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), input);
   std::vector<double> overhang_mm;
-  Status s = PoseOverhangs(surface.rail(0), input, u, &overhang_mm);
-  if (!s.ok()) return s;
+  RETURN_IF_ERROR(PoseOverhangs(surface.rail(0), input, u, &overhang_mm));
   ToolPath placed = input;
   std::vector<bool> on_surface(n, false);
   for (size_t i = 0; i < n; ++i) {
@@ -38,8 +37,7 @@ Status PlaceOnSurface(const ToolPath& input, const RuledSurface& surface, const 
     dpo.cutter_radius_mm = cutter.RadiusAt(overhang_mm[i]);
     dpo.taper_rad = cutter.taper_rad;
     ToolPose at_u;
-    s = FlankPoseAt(surface, dpo, u[i], &at_u);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(FlankPoseAt(surface, dpo, u[i], &at_u));
     placed.poses[i].a_w = at_u.a_w;
     placed.poses[i].p_w_tip = at_u.p_w_tip - overhang_mm[i] * at_u.a_w;
     on_surface[i] = true;

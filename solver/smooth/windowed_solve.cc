@@ -51,8 +51,7 @@ Status SolveInWindows(const SmoothingInputs& inputs, const HighAccuracyOptions& 
     window.held_last = end == n ? inputs.held_last : 0;
     ToolPath solved;
     HighAccuracyReport window_report;
-    Status s = SolveWholeProblem(window, options, &solved, &window_report);
-    if (!s.ok()) return s;
+    RETURN_IF_ERROR(SolveWholeProblem(window, options, &solved, &window_report));
     for (size_t i = window.held_first; i < indices.size(); ++i) {
       current.poses[first + i].p_w_tip = solved.poses[i].p_w_tip;
       current.poses[first + i].a_w = solved.poses[i].a_w;

@@ -8,8 +8,7 @@
 // a seam is optimised in the window that follows it and the path stays
 // continuous there. A window's far end is free, like the end of a path:
 // holding it at the initial guess would pull the window's last stretch
-// towards the guess (measured: 0.06 mm undercut instead of 0.007 mm from
-// a spline guess). A window keeps its result from its first free pose on;
+// towards the guess (README, "Figures behind the defaults"). A window keeps its result from its first free pose on;
 // the next window then overwrites the overlap. Paths no longer than one
 // window are solved whole. Poses the inputs hold at the path's ends stay
 // held in the first and the last window.

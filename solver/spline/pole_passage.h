@@ -8,8 +8,8 @@
 // pole, which Levenberg–Marquardt, a local method, does not do. So the
 // side the initial guess takes is the side the solve keeps, and a CAM path
 // distorted by a degree or two near the pole (or the spline guess made from
-// it) can take the wrong one; the hypar's distorted path did, and the
-// solve then bought smooth C motion with a 0.03 mm undercut.
+// it) can take the wrong one, and the solve then buys smooth C motion with
+// an undercut (README, "Figures behind the defaults").
 //
 // A passage is a stretch of cutting moves along which the axis stays
 // within `pole_angle` of +Z and its azimuth turns by at least a quarter

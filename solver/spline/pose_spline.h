@@ -17,6 +17,19 @@
 
 namespace tpopt {
 
+// The least step of TipArcLength: max(min_step_mm, of_mean_step x the mean
+// step of the poses). A pose that only turns the axis (the tip standing)
+// still gets a parameter of its own, as PoseSpline::Fit needs strictly
+// increasing ones.
+struct ArcLengthStepFloor {
+  double min_step_mm = 0.0;
+  double of_mean_step = 0.0;
+};
+
+// The tip's arc length along poses[0, n), s[0] = 0, each step at least
+// `floor`'s.
+std::vector<double> TipArcLength(const ToolPose* poses, size_t n, const ArcLengthStepFloor& floor);
+
 class PoseSpline {
  public:
   // Interpolates poses `indices` of `path` (joints[i] the joint vector of

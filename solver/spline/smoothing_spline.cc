@@ -50,8 +50,7 @@ Status SingularError() { return Status::Error("smoothing spline: the banded syst
 Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<double>& y,
                             const std::vector<double>& weights, double smoothing,
                             SmoothingSpline* out) {
-  Status st = CheckInputs(s, y, weights, smoothing);
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(CheckInputs(s, y, weights, smoothing));
   ReinschSystem system(s, weights);
   std::vector<double> gamma;
   const double lambda = Lambda(s, smoothing);
@@ -77,8 +76,7 @@ Status SmoothingSpline::FitEachWithinTolerance(const std::vector<double>& s,
                                                double tolerance,
                                                const std::vector<SmoothingSpline*>& outs) {
   for (const std::vector<double>* y : ys) {
-    Status st = CheckInputs(s, *y, weights, 0.0);
-    if (!st.ok()) return st;
+    RETURN_IF_ERROR(CheckInputs(s, *y, weights, 0.0));
   }
   ReinschSystem system(s, weights);
   return BisectSmoothing(s, ys, weights, tolerance, &system, outs);
@@ -131,8 +129,7 @@ Status SmoothingSpline::BisectSmoothing(const std::vector<double>& s,
   for (size_t k = 0; k < count; ++k) {
     // No smoothing kept every point: interpolate (lambda = 0, always within).
     if (!b[k].found) {
-      Status st = Fit(s, *ys[k], weights, 0.0, outs[k]);
-      if (!st.ok()) return st;
+      RETURN_IF_ERROR(Fit(s, *ys[k], weights, 0.0, outs[k]));
       continue;
     }
     outs[k]->Assign(shared_s, *system, *ys[k], Lambda(s, b[k].best_smoothing),

@@ -12,6 +12,7 @@
 #include "model/base/units.h"
 #include "solver/spline/overhang.h"
 #include "solver/spline/pole_crossing.h"
+#include "solver/spline/pose_spline.h"
 #include "solver/spline/smoothing_spline.h"
 
 namespace tpopt {
@@ -144,7 +145,7 @@ bool SplineSmootherOptions::IsValid(std::string* why) const {
 namespace {
 
 // What every cutting run of one SmoothWithSplines call shares.
-struct SmoothingJob {
+struct SplineJob {
   const ToolPath& in;
   const Machine& machine;
   const RuledSurface* surface;  // may be null
@@ -155,19 +156,10 @@ struct SmoothingJob {
   std::vector<PolePassage> through_pole;  // passages of `in` routed through the pole
 };
 
-// Arc length of the tip along poses[0, n), each step at least kMinStepMm.
-std::vector<double> TipArcLength(const ToolPose* poses, size_t n) {
-  std::vector<double> s(n, 0.0);
-  for (size_t i = 1; i < n; ++i) {
-    s[i] = s[i - 1] + std::max(kMinStepMm, (poses[i].p_w_tip - poses[i - 1].p_w_tip).norm());
-  }
-  return s;
-}
-
 // Zones of abrupt rotary acceleration and, with a surface, of fast
 // Gaussian-curvature change (u: the contact rulings), and the passages
 // routed through the pole (poses first.. of job.in), padded.
-std::vector<bool> FindZones(const SmoothingJob& job, size_t first, const std::vector<double>& s,
+std::vector<bool> FindZones(const SplineJob& job, size_t first, const std::vector<double>& s,
                             const std::vector<double>& a, const std::vector<double>& c,
                             SplineSmootherReport* report) {
   const SplineSmootherOptions& options = job.options;
@@ -200,10 +192,9 @@ std::vector<bool> FindZones(const SmoothingJob& job, size_t first, const std::ve
 // move onto the curves, the zones are found on a first fit without them:
 // noise within the tolerance would otherwise set the median, and with it
 // a threshold that only a distortion's peak exceeds, leaving its flanks
-// out of the zone to hold the curves to them. On the impeller's CAM path
-// with 0.3 deg noise at a 1 deg tolerance, zones on the raw angles left the
-// peak d2C/ds2 at 29x the clean path's; on the fit, 1.1x.
-Status FindZonesOfRun(const SmoothingJob& job, size_t first, const std::vector<double>& s,
+// out of the zone to hold the curves to them (README, "Figures behind the
+// defaults").
+Status FindZonesOfRun(const SplineJob& job, size_t first, const std::vector<double>& s,
                       const std::vector<double>& a, const std::vector<double>& c,
                       SplineSmootherReport* report, std::vector<bool>* zone) {
   if (!job.options.smooth_outside_zones) {
@@ -211,42 +202,47 @@ Status FindZonesOfRun(const SmoothingJob& job, size_t first, const std::vector<d
     return Status::Ok();
   }
   SmoothingSpline a_fit, c_fit;
-  const Status st = SmoothingSpline::FitEachWithinTolerance(
-      s, {&a, &c}, {}, job.options.angle_tolerance_deg / kRadToDeg, {&a_fit, &c_fit});
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(SmoothingSpline::FitEachWithinTolerance(
+      s, {&a, &c}, {}, job.options.angle_tolerance_deg / kRadToDeg, {&a_fit, &c_fit}));
   *zone = FindZones(job, first, s, a_fit.values(), c_fit.values(), report);
   return Status::Ok();
 }
 
 // The method on the cutting run [first, end) of job.in (no rapid after its
 // first pose); appends the run's poses to `out`.
-Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<ToolPose>* out,
-                 SplineSmootherReport* report) {
+// SmoothRun's first stage: the run's zones (`zone`, one flag a pose) and
+// the smoothing splines of its angles a and c over its arc length s, the
+// zones weighted by options.zone_weight.
+Status FitRunAngles(const SplineJob& job, size_t first, const std::vector<double>& s,
+                    const std::vector<double>& a, const std::vector<double>& c,
+                    SplineSmootherReport* report, std::vector<bool>* zone,
+                    SmoothingSpline* a_fit, SmoothingSpline* c_fit) {
   const SplineSmootherOptions& options = job.options;
-  std::vector<double> a, c;
-  Status st = job.machine.AssignRotaryAngles(job.in, first, end, &a, &c);
-  if (!st.ok()) return st;
-  const ToolPose* const poses = job.in.poses.data() + first;
-  const size_t n = end - first;
-  if (n < 4) {  // nothing to smooth
-    out->insert(out->end(), poses, poses + n);
-    return Status::Ok();
-  }
-  const double* const u = job.surface != nullptr ? job.u.data() + first : nullptr;
-  const std::vector<double> s = TipArcLength(poses, n);
-  std::vector<bool> zone;
-  st = FindZonesOfRun(job, first, s, a, c, report, &zone);
-  if (!st.ok()) return st;
+  const size_t n = s.size();
+  RETURN_IF_ERROR(FindZonesOfRun(job, first, s, a, c, report, zone));
   std::vector<double> weights(n, 1.0);
   for (size_t i = 0; i < n; ++i) {
-    report->poses_in_zones += zone[i];
-    if (zone[i]) weights[i] = options.zone_weight;
+    report->poses_in_zones += (*zone)[i];
+    if ((*zone)[i]) weights[i] = options.zone_weight;
   }
   const double tol_rad = options.angle_tolerance_deg / kRadToDeg;
-  SmoothingSpline a_fit, c_fit;
-  st = SmoothingSpline::FitEachWithinTolerance(s, {&a, &c}, weights, tol_rad, {&a_fit, &c_fit});
-  if (!st.ok()) return st;
+  RETURN_IF_ERROR(
+      SmoothingSpline::FitEachWithinTolerance(s, {&a, &c}, weights, tol_rad, {a_fit, c_fit}));
+  return Status::Ok();
+}
 
+// SmoothRun's second stage: the run's poses appended to `out`, those that
+// may move set on the fitted angles (pinned to their untouched neighbours),
+// with the tip on the surface when there is one.
+void AppendRunPoses(const SplineJob& job, size_t first, const std::vector<double>& s,
+                    const std::vector<double>& a, const std::vector<double>& c,
+                    const std::vector<bool>& zone, const SmoothingSpline& a_fit,
+                    const SmoothingSpline& c_fit, std::vector<ToolPose>* out,
+                    SplineSmootherReport* report) {
+  const SplineSmootherOptions& options = job.options;
+  const ToolPose* const poses = job.in.poses.data() + first;
+  const size_t n = s.size();
+  const double* const u = job.surface != nullptr ? job.u.data() + first : nullptr;
   // A pose may move when neither it nor a neighbour is a rapid end.
   auto movable = [&](size_t i) {
     return !IsPositioningMove(poses[i]) && (i + 1 >= n || !IsPositioningMove(poses[i + 1]));
@@ -286,6 +282,23 @@ Status SmoothRun(const SmoothingJob& job, size_t first, size_t end, std::vector<
     }
     out->push_back(pose_at(i, poses[i], s[i], u != nullptr ? u[i] : 0.0));
   }
+}
+
+Status SmoothRun(const SplineJob& job, size_t first, size_t end, std::vector<ToolPose>* out,
+                 SplineSmootherReport* report) {
+  std::vector<double> a, c;
+  RETURN_IF_ERROR(job.machine.AssignRotaryAngles(job.in, first, end, &a, &c));
+  const ToolPose* const poses = job.in.poses.data() + first;
+  const size_t n = end - first;
+  if (n < 4) {  // nothing to smooth
+    out->insert(out->end(), poses, poses + n);
+    return Status::Ok();
+  }
+  const std::vector<double> s = TipArcLength(poses, n, {kMinStepMm, 0.0});
+  std::vector<bool> zone;
+  SmoothingSpline a_fit, c_fit;
+  RETURN_IF_ERROR(FitRunAngles(job, first, s, a, c, report, &zone, &a_fit, &c_fit));
+  AppendRunPoses(job, first, s, a, c, zone, a_fit, c_fit, out, report);
   return Status::Ok();
 }
 
@@ -384,13 +397,12 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   std::vector<PolePassage> through_pole;
   const ToolPath& source =
       RouteThroughPoles(in, machine, options, &routed, &through_pole, report) ? routed : in;
-  SmoothingJob job{source, machine, surface, cutter, options, {}, {}, std::move(through_pole)};
+  SplineJob job{source, machine, surface, cutter, options, {}, {}, std::move(through_pole)};
   // Projected once for the whole path: every run starts at a rapid (or the
   // path's start), where the projection searches the whole rail afresh.
   if (surface != nullptr) {
     job.u = ProjectPathOntoRail(surface->rail(0), in);
-    const Status st = PoseOverhangs(surface->rail(0), in, job.u, &job.overhang_mm);
-    if (!st.ok()) return st;
+    RETURN_IF_ERROR(PoseOverhangs(surface->rail(0), in, job.u, &job.overhang_mm));
   }
   ToolPath result = WithoutPoses(in);
   result.poses.reserve(options.insert_transitions ? 2 * in.poses.size() : in.poses.size());
@@ -401,8 +413,7 @@ Status SmoothWithSplines(const ToolPath& in, const Machine& machine, const Ruled
   const size_t n = in.poses.size();
   for (size_t first = 0; first < n;) {
     const size_t end = RunEnd(in, first);
-    Status st = SmoothRun(job, first, end, &result.poses, report);
-    if (!st.ok()) return st;
+    RETURN_IF_ERROR(SmoothRun(job, first, end, &result.poses, report));
     first = end;
   }
   *out = std::move(result);

@@ -60,11 +60,10 @@ struct SplineSmootherOptions {
   // Largest angle any axis of a passage may be from the fitted plane through
   // +Z for the passage to be routed straight through the pole, which moves
   // each axis by its angle from the plane. Degrees, >= 0; 0 = never. The
-  // default admits the hypar's U/V-distorted path, 3.4 deg off the plane its
-  // clean path crosses on (the closest approach to the pole is 0.74 deg, but
-  // the bump's axis error takes the passage further off the plane on its way
-  // round), and stays below the 5 deg passage angle, so that a passage circling
-  // the pole near that angle, which is no near miss, is never flattened.
+  // default admits a CAM path whose U/V error takes its passage a few
+  // degrees off the plane, and stays below the 5 deg passage angle, so that
+  // a passage circling the pole near that angle, which is no near miss, is
+  // never flattened (README, "Figures behind the defaults").
   double pole_crossing_deg = 4.0;
 
   bool IsValid(std::string* why) const;

@@ -2,8 +2,8 @@
 //
 // The flank distance does not change when the axis turns about its contact
 // line, so on a strongly twisted surface the deviation family alone lets an
-// axis swing far from the CAM's (A = 133 deg where the input's polar angle
-// was 64 deg). With a0 the input's axis and theta the cone's half angle,
+// axis swing far from the CAM's (README, "Figures behind the defaults").
+// With a0 the input's axis and theta the cone's half angle,
 //   c = 1 - a_w . a0                      (1 - cos of the angle between them)
 //   r = s * max(0, c - (1 - cos theta)) / (1 - cos theta)
 // a one-sided wall, zero inside the cone, dimensionless; s = sqrt(w h / L)

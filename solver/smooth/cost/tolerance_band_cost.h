@@ -9,12 +9,10 @@
 //   r_slide = s * slide * ((p - p0) . t) / h
 // with s = sqrt(w h / L) as in the other families, m < 1 a margin, h the
 // arc-length step of the pose. The walls are soft, so under the smoothing's
-// pull a pose ends slightly past its wall (about 1 % of the tolerance on the
-// LinuxCNC impeller at the surface-free preset); m = 0.98 leaves room for
-// that before the final clamp, which moves a pose without its neighbours, has
-// to act, yet hands the smoothing all but 2 % of the promised band (at 0.9,
-// the band's outer tenth went unused wherever the band was what bound the
-// smoothing). The first two are one-sided walls, zero
+// pull a pose ends slightly past its wall; m = 0.98 leaves room for that
+// before the final clamp, which moves a pose without its neighbours, has to
+// act, yet hands the smoothing all but 2 % of the promised band (README,
+// "Figures behind the defaults"). The first two are one-sided walls, zero
 // inside the band; the third, weak, keeps a pose at its station along the
 // path so that smoothing cannot bunch poses up. 1 - a . a0 is used rather
 // than the angle itself because it is smooth at a = a0.

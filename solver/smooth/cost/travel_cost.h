@@ -2,8 +2,8 @@
 //
 // The tip and axis are free in W, and a pose far from the table's centre
 // maps to joints that move by the distance times the turn of A or C, so a
-// solve can carry a pose out of the travel (Y = -157 mm against +-100) with
-// nothing in the cost noticing. For each joint X, Y, Z (machine frame,
+// solve can carry a pose out of the travel with nothing in the cost
+// noticing (README, "Figures behind the defaults"). For each joint X, Y, Z (machine frame,
 // through the kinematics) with travel [lo, hi] and a margin e inside it,
 //   r_j = s * (max(0, J_j - (hi - e)) + max(0, (lo + e) - J_j)) / e
 // zero inside the travel less e, one-sided, dimensionless; s = sqrt(w h / L)
