@@ -87,6 +87,35 @@ std::string Summary(const std::string& label, const PathMetrics& m) {
   return out;
 }
 
+namespace {
+
+// A run put back as programmed: its source lines, reason and the figures
+// of that reason (KeptRun).
+nlohmann::json KeptRunJson(const KeptRun& k) {
+  nlohmann::json j = {{"first_line", k.first_line},
+                      {"last_line", k.last_line},
+                      {"reason", k.reason}};
+  if (k.reason == "d2") {
+    j["axis"] = k.axis;
+    j["input_peak_d2_deg_per_mm2"] = k.input_peak * kRadToDeg;
+    j["smoothed_peak_d2_deg_per_mm2"] = k.smoothed_peak * kRadToDeg;
+  } else if (k.reason == "limits") {
+    j["input_limit_violations"] = k.input_violations;
+    j["smoothed_limit_violations"] = k.smoothed_violations;
+  } else if (k.reason == "tolerance") {
+    j["u"] = k.u;
+    j["v"] = k.v;
+    j["worst_mm"] = k.worst_mm;
+    j["input_mm"] = k.input_mm;
+    j["beyond_tolerance_mm"] = k.beyond_mm;
+  } else if (k.neighbour_line > 0) {
+    j["neighbour_first_line"] = k.neighbour_line;
+  }
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string& mode,
                                 const SmoothingResult& result) {
   nlohmann::json report = MetricsJson(result.output_metrics);
@@ -105,6 +134,8 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
                       {"max_angle_change_deg", result.spline.max_angle_change_deg},
                       {"pole_crossings", result.spline.pole_crossings}};
   report["runs_kept_as_input"] = result.runs_kept_as_input;
+  report["runs_kept"] = nlohmann::json::array();
+  for (const KeptRun& k : result.runs_kept) report["runs_kept"].push_back(KeptRunJson(k));
   report["stiffer_solves"] = result.stiffer_solves;
   report["feed_schedule"] = {{"passes", result.feed.passes},
                              {"moves_slowed", result.feed.moves_slowed},

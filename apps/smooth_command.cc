@@ -1,6 +1,8 @@
 // tpopt smooth: the plain spline method or the high-accuracy mode, with the
 // metrics of the input and the output side by side.
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "apps/commands.h"
 #include "apps/controller_run.h"
@@ -11,6 +13,7 @@
 #include "apps/picture_outputs.h"
 #include "apps/progress_display.h"
 #include "apps/report.h"
+#include "model/base/units.h"
 #include "model/io/apt_io.h"
 #include "solver/smooth/smoothing_pipeline.h"
 
@@ -69,6 +72,29 @@ Status WriteOutputs(const Invocation& invocation, const Job& job, const Smoothin
   return s;
 }
 
+// One run put back as programmed: its lines, why, and the figures judged.
+std::string DescribeKeptRun(const KeptRun& k) {
+  char line[256];
+  int n = std::snprintf(line, sizeof line, "lines %d-%d: ", k.first_line, k.last_line);
+  const size_t room = sizeof line - n;
+  if (k.reason == "d2") {
+    std::snprintf(line + n, room, "peak d2%s/ds2 %.4g -> %.4g deg/mm^2 (input -> smoothed)",
+                  k.axis.c_str(), k.input_peak * kRadToDeg, k.smoothed_peak * kRadToDeg);
+  } else if (k.reason == "limits") {
+    std::snprintf(line + n, room, "axis-limit violations %d -> %d (input -> smoothed)",
+                  k.input_violations, k.smoothed_violations);
+  } else if (k.reason == "tolerance") {
+    std::snprintf(line + n, room,
+                  "tolerance: %.4f mm at (u %.4f, v %.4f), %.4f mm beyond it (input %.4f mm)",
+                  k.worst_mm, k.u, k.v, k.beyond_mm, k.input_mm);
+  } else if (k.neighbour_line > 0) {
+    std::snprintf(line + n, room, "with its neighbour from line %d", k.neighbour_line);
+  } else {
+    std::snprintf(line + n, room, "with its neighbours");
+  }
+  return line;
+}
+
 void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& result) {
   std::printf("%s%s", Summary("input ", result.input_metrics).c_str(),
               Summary("output", result.output_metrics).c_str());
@@ -96,6 +122,15 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
                 "d2C/ds2 higher (in high accuracy also: broke more axis limits, or left "
                 "points beyond the tolerance)\n",
                 result.runs_kept_as_input);
+    // Which, and why: one line a run (the first kMaxKeptLines).
+    constexpr int kMaxKeptLines = 20;
+    const int listed = std::min<int>(kMaxKeptLines, static_cast<int>(result.runs_kept.size()));
+    for (int i = 0; i < listed; ++i) {
+      std::printf("    %s\n", DescribeKeptRun(result.runs_kept[i]).c_str());
+    }
+    if (static_cast<int>(result.runs_kept.size()) > listed) {
+      std::printf("    ... and %d more\n", static_cast<int>(result.runs_kept.size()) - listed);
+    }
   }
   if (result.feed.moves_slowed > 0) {
     std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",

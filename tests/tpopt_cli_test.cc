@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <Eigen/Core>
@@ -414,6 +415,45 @@ std::vector<std::string> Lines(const std::string& file) {
   return lines;
 }
 
+// Where `lines` holds `block` whole, from `from` on (lines.size() if not).
+size_t FindBlock(const std::vector<std::string>& lines, const std::vector<std::string>& block,
+                 size_t from = 0) {
+  return std::search(lines.begin() + std::min(from, lines.size()), lines.end(), block.begin(),
+                     block.end()) -
+         lines.begin();
+}
+
+// The runs a smooth report says were kept as programmed, checked against
+// the files: each names lines first..last of `in` (1-based), in program
+// order, that `out` holds as written in one block, and there are
+// runs_kept_as_input of them. Returns the blocks. (Run without the feed
+// schedule, which rewrites the F of moves in any run, kept or not.)
+std::vector<std::vector<std::string>> ExpectKeptRunsAsWritten(const std::string& in,
+                                                              const std::string& out,
+                                                              const nlohmann::json& report) {
+  const std::vector<std::string> a = Lines(in), b = Lines(out);
+  const nlohmann::json& kept = report["runs_kept"];
+  std::vector<std::vector<std::string>> blocks;
+  EXPECT_TRUE(kept.is_array()) << report.dump();
+  if (!kept.is_array()) return blocks;
+  EXPECT_EQ(static_cast<int>(kept.size()), report["runs_kept_as_input"].get<int>());
+  int previous = 0;
+  size_t from = 0;
+  for (const nlohmann::json& k : kept) {
+    const int first = k["first_line"].get<int>(), last = k["last_line"].get<int>();
+    EXPECT_GT(first, previous) << k.dump();
+    EXPECT_LE(first, last) << k.dump();
+    EXPECT_LE(last, static_cast<int>(a.size())) << k.dump();
+    if (first <= previous || first > last || last > static_cast<int>(a.size())) continue;
+    previous = last;
+    blocks.emplace_back(a.begin() + first - 1, a.begin() + last);
+    const size_t at = FindBlock(b, blocks.back(), from);
+    EXPECT_LT(at, b.size()) << "input lines " << first << "-" << last << " are not in " << out;
+    if (at < b.size()) from = at + blocks.back().size();
+  }
+  return blocks;
+}
+
 // Checks that `out` is `in` with runs of cutting GOTOs replaced: every line
 // of `in` that is not a GOTO, or is a GOTO `kept` lists (1-based lines), is
 // in `out` in order; everything else in `out` is a GOTO or a FEDRAT. Returns
@@ -697,13 +737,27 @@ TEST(TpoptCliTest, ToolTableSizesAGcodeProgramsTools) {
   // blade where the input was 0.013; T1's run goes back as programmed.
   for (const std::string mode : {"spline", "high_accuracy"}) {
     const std::string out = dir.File(mode + ".ngc");
+    // Without the feed schedule, which would rewrite the F of kept moves.
     r = RunCommand(Tpopt("smooth --mode=" + mode + " --in=" + in + " --surface=" + kBlade +
                          " --tool_table=" + table + " --out=" + out + " --report=" + report +
-                         " --quiet"));
+                         " --schedule_feed=false --quiet"));
     ASSERT_EQ(r.exit_code, 0) << mode << ": " << r.output;
     j = ReadJson(report);
     if (mode == "high_accuracy") {
       EXPECT_GE(j["runs_kept_as_input"].get<int>(), 1);
+      // T1's run, named by its lines (all before T2's M6), for the points
+      // it reaches beyond the 0.01 mm.
+      ExpectKeptRunsAsWritten(in, out, j);
+      const std::vector<std::string> lines = Lines(in);
+      const int t2 = static_cast<int>(
+          std::find(lines.begin(), lines.end(), "T2 M6") - lines.begin()) + 1;
+      bool t1_beyond = false;
+      for (const nlohmann::json& k : j["runs_kept"]) {
+        if (k["reason"] != "tolerance") continue;
+        EXPECT_GT(k["worst_mm"].get<double>(), 0.01) << k.dump();
+        t1_beyond |= k["last_line"].get<int>() < t2;
+      }
+      EXPECT_TRUE(t1_beyond) << j["runs_kept"].dump();
     }
     EXPECT_TRUE(j["cutter"]["per_tool"].get<bool>());
     std::printf("%s: max |dev| %.4f -> %.4f mm, rms %.4f -> %.4f mm (each move its own tool)\n",
@@ -882,12 +936,28 @@ TEST(TpoptCliTest, SmoothExitsOneForBadInputAndPutsBackWhatTheToleranceCannotHol
   auto r = RunCommand(
       Tpopt("generate --surface=" + hypar + " --cutter_radius=4 --poses=80 --out=" + cls));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  r = RunCommand(Tpopt("smooth --quiet --mode=high_accuracy --tolerance_mm=0.002 --in=" + cls +
+  r = RunCommand(Tpopt("smooth --quiet --mode=high_accuracy --tolerance_mm=0.002 "
+                       "--schedule_feed=false --in=" + cls +
                        " --surface=" + hypar + " --machine=" + machine + " --out=" + out +
                        " --report=" + report));
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(FileExists(out));
   EXPECT_GE(ReadJson(report)["runs_kept_as_input"].get<int>(), 1);
+  // Named by its lines, which the output holds as written, and by the
+  // worst point it reaches: beyond the 0.002 mm by what the report says,
+  // where the input was within it or nearer.
+  const nlohmann::json j = ReadJson(report);
+  ExpectKeptRunsAsWritten(cls, out, j);
+  int reaching = 0;
+  for (const nlohmann::json& k : j["runs_kept"]) {
+    if (k["reason"].get<std::string>() != "tolerance") continue;
+    ++reaching;
+    const double worst = k["worst_mm"].get<double>();
+    EXPECT_GT(worst, 0.002) << k.dump();
+    EXPECT_NEAR(k["beyond_tolerance_mm"].get<double>(), worst - 0.002, 1e-12) << k.dump();
+    EXPECT_LT(k["input_mm"].get<double>(), worst) << k.dump();
+  }
+  EXPECT_GE(reaching, 1) << j["runs_kept"].dump();
 
   // Only rapids: read and within the travel, but nothing to smooth.
   const std::string rapids = dir.File("rapids.ngc");
@@ -987,6 +1057,69 @@ TEST(TpoptCliPicturesTest, ProgressShowsPastTheDelayAndQuietSilencesIt) {
 // itself: on LinuxCNC's impeller program the plain command (which once
 // failed, exit 3, worse than its start) writes what the preset writes, byte
 // for byte; a weight given on the command line still wins.
+// LinuxCNC's impeller in spline mode: the runs the spline made worse on
+// peak d2A/ds2 or d2C/ds2 go back as programmed, and smooth names each by
+// its lines and figures, on the console and in the report. Each named range
+// is in the output as the input wrote it, and the spline without the
+// put-back changes every one (so the lines are those of runs it moved).
+TEST(TpoptCliTest, SmoothNamesTheRunsItKeepsAsProgrammed) {
+  const std::string ngc =
+      "/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/vismach/5axis/"
+      "table-rotary-tilting/demos/impeller-7bl-xyzac.ngc";
+  if (!testing::FileExists(ngc)) GTEST_SKIP() << ngc << " absent (linuxcnc-uspace)";
+  testing::TempDir dir;
+  const std::string common = " smooth --mode=spline --schedule_feed=false --cutter_radius=3 --in=" +
+                             ngc + " --machine=" + kSim;
+  const std::string out = dir.File("kept.ngc"), report = dir.File("kept.json");
+  auto r = RunCommand(Tpopt(common + " --out=" + out + " --report=" + report));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const nlohmann::json j = ReadJson(report);
+  const int kept = j["runs_kept_as_input"].get<int>();
+  EXPECT_GT(kept, 1);
+  const std::vector<std::vector<std::string>> blocks = ExpectKeptRunsAsWritten(ngc, out, j);
+  ASSERT_EQ(static_cast<int>(blocks.size()), kept);
+  // The reason: a run put back for itself had its peak raised on the axis
+  // named, from a peak no higher than the input's whole; any other went
+  // back with the neighbour after it, itself put back.
+  std::set<int> firsts;
+  for (const nlohmann::json& k : j["runs_kept"]) firsts.insert(k["first_line"].get<int>());
+  int own = 0;
+  for (const nlohmann::json& k : j["runs_kept"]) {
+    const std::string reason = k["reason"].get<std::string>();
+    if (reason == "neighbour") {
+      EXPECT_EQ(firsts.count(k["neighbour_first_line"].get<int>()), 1u) << k.dump();
+      EXPECT_GT(k["neighbour_first_line"].get<int>(), k["last_line"].get<int>()) << k.dump();
+      continue;
+    }
+    ASSERT_EQ(reason, "d2") << k.dump();
+    ++own;
+    const std::string axis = k["axis"].get<std::string>();
+    ASSERT_TRUE(axis == "A" || axis == "C") << k.dump();
+    const double in_peak = k["input_peak_d2_deg_per_mm2"].get<double>();
+    EXPECT_GT(k["smoothed_peak_d2_deg_per_mm2"].get<double>(), in_peak) << k.dump();
+    EXPECT_LE(in_peak, j["input"][axis]["peak_second_derivative_per_mm2"].get<double>() + 1e-9)
+        << k.dump();
+  }
+  EXPECT_GT(own, 0);
+  // One console line a run (fewer than the 20 listed at most), each
+  // naming its lines.
+  for (const nlohmann::json& k : j["runs_kept"]) {
+    const std::string named = "    lines " + std::to_string(k["first_line"].get<int>()) + "-" +
+                              std::to_string(k["last_line"].get<int>()) + ": ";
+    EXPECT_NE(r.output.find(named), std::string::npos) << named << "\n" << r.output;
+  }
+  EXPECT_EQ(testing::CountOccurrences(r.output, "    lines "), kept) << r.output;
+  EXPECT_EQ(r.output.find("... and "), std::string::npos) << r.output;
+  // Without the put-back the spline changes each of those ranges.
+  const std::string moved = dir.File("moved.ngc");
+  r = RunCommand(Tpopt(common + " --keep_runs_no_worse=false --quiet --out=" + moved));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<std::string> m = Lines(moved);
+  for (const std::vector<std::string>& block : blocks) {
+    EXPECT_EQ(FindBlock(m, block), m.size()) << block.front() << " .. " << block.back();
+  }
+}
+
 TEST(TpoptCliTest, SmoothWithoutASurfaceNeedsNoPreset) {
   const std::string ngc =
       "/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/vismach/5axis/"

@@ -172,9 +172,11 @@ struct NoWorseOn {
 // run before, which a method may move: a run put back that is still worse
 // puts its predecessor back too, until none is (at worst the whole input).
 // False, with nothing changed, when the two paths' runs do not pair up
-// (which no method makes) or joints cannot be assigned.
+// (which no method makes) or joints cannot be assigned. `why`, if not null,
+// (one a run, a reason already given kept) receives why each run went back.
 bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double default_feed_mm_per_min,
-                     NoWorseOn on, ToolPath* output, std::vector<bool>* back) {
+                     NoWorseOn on, ToolPath* output, std::vector<bool>* back,
+                     std::vector<KeptRun>* why = nullptr) {
   std::vector<RunFigures> before, after;
   if (!RunPeaks(input, machine, default_feed_mm_per_min, &before).ok() ||
       !RunPeaks(*output, machine, default_feed_mm_per_min, &after).ok() ||
@@ -183,6 +185,10 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
   }
   const size_t runs = before.size();
   if (back->size() != runs) back->assign(runs, false);
+  std::vector<KeptRun> ignored;
+  if (why == nullptr) why = &ignored;
+  if (why->size() != runs) why->assign(runs, KeptRun());
+  const std::vector<size_t> in_first = RunStarts(input);
   ToolPath composed = ComposeRuns(input, *output, *back);
   if (!RunPeaks(composed, machine, default_feed_mm_per_min, &after).ok()) return false;
   // Round-off of the written 6 decimals is no worsening.
@@ -196,8 +202,29 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
       if (!(on.d2 && worse_d2) && !(on.limits && worse_limits)) continue;
       if (!(*back)[r]) {
         (*back)[r] = changed = true;
+        KeptRun& k = (*why)[r];
+        if (!k.reason.empty()) continue;
+        if (on.d2 && worse_d2) {
+          const int a = after[r].peak_d2[1] - before[r].peak_d2[1] >
+                                after[r].peak_d2[0] - before[r].peak_d2[0]
+                            ? 1
+                            : 0;
+          k.reason = "d2";
+          k.axis = a == 0 ? "A" : "C";
+          k.input_peak = before[r].peak_d2[a];
+          k.smoothed_peak = after[r].peak_d2[a];
+        } else {
+          k.reason = "limits";
+          k.input_violations = before[r].limit_violations;
+          k.smoothed_violations = after[r].limit_violations;
+        }
       } else if (r > 0 && !(*back)[r - 1]) {
         (*back)[r - 1] = changed = true;
+        KeptRun& k = (*why)[r - 1];
+        if (k.reason.empty()) {
+          k.reason = "neighbour";
+          k.neighbour_line = input.poses[in_first[r]].source_line;
+        }
       }
     }
     if (!changed) break;
@@ -206,6 +233,23 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
   }
   *output = std::move(composed);
   return true;
+}
+
+// The runs `back` of `input` (RunStarts) with their lines and reasons `why`
+// (a run with none went back with all the others: a neighbour).
+std::vector<KeptRun> ListKeptRuns(const ToolPath& input, const std::vector<bool>& back,
+                                  const std::vector<KeptRun>& why) {
+  const std::vector<size_t> first = RunStarts(input);
+  std::vector<KeptRun> kept;
+  for (size_t r = 0; r < back.size() && r + 1 < first.size(); ++r) {
+    if (!back[r]) continue;
+    KeptRun k = r < why.size() ? why[r] : KeptRun();
+    if (k.reason.empty()) k.reason = "neighbour";
+    k.first_line = input.poses[first[r]].source_line;
+    k.last_line = input.poses[first[r + 1] - 1].source_line;
+    kept.push_back(std::move(k));
+  }
+  return kept;
 }
 
 using Evaluator = std::function<Status(const std::string& what, const ToolPath& path,
@@ -221,8 +265,9 @@ using Evaluator = std::function<Status(const std::string& what, const ToolPath& 
 // program breaks the tolerance (when `tolerance_mm` > 0), the neighbours of
 // the put-back runs go back too, until it holds (at worst the whole input,
 // which the tolerance never refuses). On success result->output and
-// output_at_input_feed are the composed program's, and runs_kept_as_input
-// counts the runs put back.
+// output_at_input_feed are the composed program's, runs_kept_as_input
+// counts the runs put back and runs_kept lists them; `why` (one a run)
+// comes in with the reasons of the runs `back` already put back.
 // A put-back run's moves evaluated in the composed path give the input's
 // deviation to round-off (seen: 1e-17 mm above it); a nanometre is far
 // below any tolerance.
@@ -230,11 +275,13 @@ constexpr double kSameMovesSlackMm = 1e-6;
 
 Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per_min,
                              NoWorseOn on, double tolerance_mm, const Evaluator& evaluate,
-                             std::vector<bool> back, SmoothingResult* result) {
+                             std::vector<bool> back, std::vector<KeptRun> why,
+                             SmoothingResult* result) {
+  const std::vector<size_t> in_first = RunStarts(*job.input);
   for (;;) {
     ToolPath composed = result->output;
     if (!KeepRunsNoWorse(*job.input, *job.machine, default_feed_mm_per_min, on, &composed,
-                         &back)) {
+                         &back, &why)) {
       return Status::Ok();
     }
     const int kept = static_cast<int>(std::count(back.begin(), back.end(), true));
@@ -250,13 +297,20 @@ Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per
       result->output = std::move(composed);
       result->output_at_input_feed = std::move(metrics);
       result->runs_kept_as_input = kept;
+      result->runs_kept = ListKeptRuns(*job.input, back, why);
       return Status::Ok();
     }
     std::vector<bool> grown = back;
     for (size_t r = 0; r < back.size(); ++r) {
       if (!back[r]) continue;
-      if (r > 0) grown[r - 1] = true;
-      if (r + 1 < back.size()) grown[r + 1] = true;
+      for (size_t n : {r - 1, r + 1}) {  // r - 1 wraps past the end at r = 0
+        if (n >= back.size() || back[n]) continue;
+        grown[n] = true;
+        if (why[n].reason.empty()) {
+          why[n].reason = "neighbour";
+          why[n].neighbour_line = job.input->poses[in_first[r]].source_line;
+        }
+      }
     }
     if (grown == back) grown.assign(back.size(), true);
     back = std::move(grown);
@@ -272,20 +326,35 @@ Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per
 // positioning target, kept as programmed, so the move into it changes only
 // with the pose before it, the last of the run before (a pose held before a
 // tool change is a run of one whose move only the run before changes).
+// `why` (one a run) receives, for each run that reaches one, the worst of
+// those points and how far beyond `tolerance_mm` it is.
 std::vector<bool> RunsReaching(const RuledSurface& surface, const ToolPath& input,
-                               const DeviationReport& report, const std::vector<size_t>& beyond) {
+                               const DeviationReport& in, const DeviationReport& report,
+                               const std::vector<size_t>& beyond, double tolerance_mm,
+                               std::vector<KeptRun>* why) {
   const std::vector<size_t> first = RunStarts(input);
   const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), input);
   const size_t nv = report.v.size();
   const double step = report.u.size() > 1 ? std::abs(report.u[1] - report.u[0]) : 0.0;
   std::vector<bool> reach(first.size() - 1, false);
+  why->assign(reach.size(), KeptRun());
   for (size_t r = 0; r + 1 < first.size(); ++r) {
     size_t end = first[r + 1];
     if (end < u.size() && !input.poses[end].rapid) ++end;  // the move out of its last pose
     const auto [lo, hi] = std::minmax_element(u.begin() + first[r], u.begin() + end);
     for (size_t k : beyond) {
       const double uk = report.u[k / nv];
-      if (uk >= *lo - step && uk <= *hi + step) reach[r] = true;
+      if (uk < *lo - step || uk > *hi + step) continue;
+      const double d = std::abs(report.deviation_mm[k]);
+      KeptRun& w = (*why)[r];
+      if (reach[r] && d <= w.worst_mm) continue;
+      reach[r] = true;
+      w.reason = "tolerance";
+      w.u = uk;
+      w.v = report.v[k % nv];
+      w.worst_mm = d;
+      w.input_mm = std::abs(in.deviation_mm[k]);
+      w.beyond_mm = d - tolerance_mm;
     }
   }
   return reach;
@@ -398,6 +467,7 @@ struct HeldSolve {
   std::vector<TolerancePoint> active;
   std::string beyond_refusal;
   std::vector<bool> beyond_runs;
+  std::vector<KeptRun> beyond_why;  // one a run, RunsReaching's
 };
 
 // One solve, then again with the points it left beyond the tolerance held,
@@ -443,7 +513,8 @@ Status SolveWithinTolerance(const SmoothingRun& run, const HighAccuracyOptions& 
             << " times the surface's weight";
         if (!may_put_back) return Status::SolverFailure(why.str());
         held->beyond_refusal = why.str();
-        held->beyond_runs = RunsReaching(*job.surface, *job.input, out, beyond);
+        held->beyond_runs = RunsReaching(*job.surface, *job.input, in, out, beyond,
+                                         solve_options.tolerance_mm, &held->beyond_why);
         return Status::Ok();
       }
       if (!beyond.empty()) {
@@ -552,7 +623,7 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& spline_path,
   if (no_worse.d2 || no_worse.limits || !held.beyond_runs.empty()) {
     Status s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min, no_worse,
                                      held_to_tolerance ? options.tolerance_mm : 0.0, run.Judge(),
-                                     held.beyond_runs, result);
+                                     held.beyond_runs, held.beyond_why, result);
     if (!s.ok()) {
       return Status::SolverFailure(
           "the smoothed path with runs kept as programmed does not fit the machine (" +
@@ -623,10 +694,12 @@ Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& set
   if (!high_accuracy) {
     result->output = std::move(spline_path);
     std::vector<bool> back;
+    std::vector<KeptRun> why;
     if (settings.keep_runs_no_worse &&
         KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
-                        NoWorseOn(), &result->output, &back)) {
+                        NoWorseOn(), &result->output, &back, &why)) {
       result->runs_kept_as_input = static_cast<int>(std::count(back.begin(), back.end(), true));
+      result->runs_kept = ListKeptRuns(*job.input, back, why);
     }
     RETURN_IF_ERROR(run.FinishOutput());
   } else {
@@ -691,6 +764,7 @@ Status ToolPieces(const SmoothingJob& job, std::vector<size_t>* first) {
 void AddPieceReports(const SmoothingResult& part, bool feeds, bool high_accuracy,
                      SmoothingResult* result) {
   result->runs_kept_as_input += part.runs_kept_as_input;
+  result->runs_kept.insert(result->runs_kept.end(), part.runs_kept.begin(), part.runs_kept.end());
   result->tolerance_rounds = std::max(result->tolerance_rounds, part.tolerance_rounds);
   result->tolerance_points += part.tolerance_points;
   result->solve_tolerance_mm = std::max(result->solve_tolerance_mm, part.solve_tolerance_mm);

@@ -16,6 +16,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "model/eval/path_metrics.h"
 #include "solver/smooth/ceres_smoother.h"
@@ -26,6 +27,39 @@
 namespace tpopt {
 
 enum class SmoothingMode { kSpline, kHighAccuracy };
+
+// A cutting run put back as programmed, and why (the rule that put it
+// back, with the figures it judged), so that a process engineer can find
+// it in the program.
+struct KeptRun {
+  // Source lines of the run's first and last pose (ToolPose::source_line).
+  int first_line = 0;
+  int last_line = 0;
+  // "d2": the method made its peak |d2A/ds2| or |d2C/ds2| higher;
+  // "limits": it broke more axis limits than the input's run;
+  // "tolerance": it reaches grid points the solve left beyond the
+  // tolerance; "neighbour": a neighbour put back was still worse (d2 or
+  // limits, through the pose they share) or left the mix beyond the
+  // tolerance.
+  std::string reason;
+  // d2: the failing axis ("A" or "C", the larger excess) and the run's peak
+  // there, input and smoothed, rad per mm^2 (the report gives deg).
+  std::string axis;
+  double input_peak = 0.0;
+  double smoothed_peak = 0.0;
+  // limits: the run's axis-limit violations, input and smoothed.
+  int input_violations = 0;
+  int smoothed_violations = 0;
+  // tolerance: the worst grid point the run reaches, its |deviation| after
+  // the solve and the input's there, mm, and how far beyond the tolerance.
+  double u = 0.0;
+  double v = 0.0;
+  double worst_mm = 0.0;
+  double input_mm = 0.0;
+  double beyond_mm = 0.0;
+  // neighbour: the first source line of the neighbour that put it back.
+  int neighbour_line = 0;
+};
 
 struct SmoothingJob {
   const ToolPath* input = nullptr;
@@ -97,6 +131,8 @@ struct SmoothingResult {
   // the input's (put back rather than refused), or, with a surface, because
   // a neighbour put back left the mix beyond the tolerance.
   int runs_kept_as_input = 0;
+  // Those runs in program order, each with its lines and reason.
+  std::vector<KeptRun> runs_kept;
   // High accuracy with a surface: solves repeated with the smoothness
   // weights raised because a run came out worse on peak d2 than the input's
   // (each kept only if held to the tolerance).
