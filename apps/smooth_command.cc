@@ -85,7 +85,7 @@ std::string DescribeKeptRun(const KeptRun& k) {
                   k.input_violations, k.smoothed_violations);
   } else if (k.reason == "tolerance") {
     std::snprintf(line + n, room,
-                  "tolerance: %.4f mm at (u %.4f, v %.4f), %.4f mm beyond it (input %.4f mm)",
+                  "tolerance: %.5f mm at (u %.4f, v %.4f), %.5f mm beyond it (input %.5f mm)",
                   k.worst_mm, k.u, k.v, k.beyond_mm, k.input_mm);
   } else if (k.neighbour_line > 0) {
     std::snprintf(line + n, room, "with its neighbour from line %d", k.neighbour_line);
