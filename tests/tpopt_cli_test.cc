@@ -25,6 +25,10 @@ using testing::Tpopt;
 
 const std::string kBlade = SourcePath("data/surfaces/impeller_blade.json");
 const std::string kSim = SourcePath("data/machines/linuxcnc_xyzac_trt_sim.json");
+// LinuxCNC's own 5-axis impeller program (linuxcnc-uspace's examples).
+const std::string kLinuxCncImpeller =
+    "/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/vismach/5axis/"
+    "table-rotary-tilting/demos/impeller-7bl-xyzac.ngc";
 
 
 // A clean DPO path of the shared blade with `poses` poses, written to `cls`.
@@ -1063,9 +1067,7 @@ TEST(TpoptCliPicturesTest, ProgressShowsPastTheDelayAndQuietSilencesIt) {
 // is in the output as the input wrote it, and the spline without the
 // put-back changes every one (so the lines are those of runs it moved).
 TEST(TpoptCliTest, SmoothNamesTheRunsItKeepsAsProgrammed) {
-  const std::string ngc =
-      "/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/vismach/5axis/"
-      "table-rotary-tilting/demos/impeller-7bl-xyzac.ngc";
+  const std::string ngc = kLinuxCncImpeller;
   if (!testing::FileExists(ngc)) GTEST_SKIP() << ngc << " absent (linuxcnc-uspace)";
   testing::TempDir dir;
   const std::string common = " smooth --mode=spline --schedule_feed=false --cutter_radius=3 --in=" +
@@ -1121,9 +1123,7 @@ TEST(TpoptCliTest, SmoothNamesTheRunsItKeepsAsProgrammed) {
 }
 
 TEST(TpoptCliTest, SmoothWithoutASurfaceNeedsNoPreset) {
-  const std::string ngc =
-      "/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis/vismach/5axis/"
-      "table-rotary-tilting/demos/impeller-7bl-xyzac.ngc";
+  const std::string ngc = kLinuxCncImpeller;
   if (!testing::FileExists(ngc)) GTEST_SKIP() << ngc << " absent (linuxcnc-uspace)";
   testing::TempDir dir;
   const std::string common = " smooth --quiet --cutter_radius=3 --in=" + ngc + " --machine=" +
