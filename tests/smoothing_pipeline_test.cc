@@ -14,6 +14,17 @@
 namespace tpopt {
 namespace {
 
+// A 41-pose DPO path over the whole impeller blade (u in [0, 1]).
+ToolPath ImpellerDpo(RuledSurface* surface, Machine* machine) {
+  testing::LoadImpellerBench(surface, machine);
+  FlankPathOptions g;
+  g.poses = 41;
+  g.strategy = FlankStrategy::kDoublePointOffset;
+  ToolPath path;
+  EXPECT_TRUE(GenerateFlankPath(*surface, g, &path).ok());
+  return path;
+}
+
 // With judge_on_input_range the output is judged on the grid of the
 // input's covered range, point by point, whatever range the output itself
 // covers: the high-accuracy solve of this path starting at u = 0.25 moves
@@ -21,13 +32,7 @@ namespace {
 TEST(SmoothingPipelineTest, OutputIsJudgedOnTheInputsRange) {
   RuledSurface surface;
   Machine machine;
-  testing::LoadImpellerBench(&surface, &machine);
-  FlankPathOptions g;
-  g.poses = 41;
-  g.strategy = FlankStrategy::kDoublePointOffset;
-  ToolPath full;
-  ASSERT_TRUE(GenerateFlankPath(surface, g, &full).ok());
-  ToolPath input = full;
+  ToolPath input = ImpellerDpo(&surface, &machine);
   input.poses.erase(input.poses.begin(), input.poses.begin() + 10);  // u from 0.25
   SmoothingSettings settings;
   settings.mode = SmoothingMode::kHighAccuracy;
@@ -55,12 +60,7 @@ TEST(SmoothingPipelineTest, OutputIsJudgedOnTheInputsRange) {
 TEST(SmoothingPipelineTest, ByDefaultAnOutputShortOfTheEndsIsChargedForThem) {
   RuledSurface surface;
   Machine machine;
-  testing::LoadImpellerBench(&surface, &machine);
-  FlankPathOptions g;
-  g.poses = 41;
-  g.strategy = FlankStrategy::kDoublePointOffset;
-  ToolPath input;
-  ASSERT_TRUE(GenerateFlankPath(surface, g, &input).ok());
+  const ToolPath input = ImpellerDpo(&surface, &machine);
   double in_lo = 0, in_hi = 0, out_lo = 0, out_hi = 0;
   ASSERT_TRUE(CoveredRangeU(surface, input, &in_lo, &in_hi));
   ASSERT_NEAR(in_lo, 0.0, 1e-9);
