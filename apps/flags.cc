@@ -67,10 +67,10 @@ DEFINE_string(interpolation, "",
               "the high_accuracy cost: tcp (tip linear in the workpiece, A and C linear) or joint "
               "(X Y Z A C linear). Empty: joint for joint-style G-code (the input's for "
               "evaluate, the output's for smooth), else tcp.");
-DEFINE_bool(judge_on_input_range, false,
+DEFINE_bool(judge_on_input_range, true,
             "smooth: judge the output (report and tolerance check) on the grid of the input's "
-            "covered u range instead of the output's own, so a path that retreats from the "
-            "surface's ends is charged for what it leaves.");
+            "covered u range, so a path that retreats from the surface's ends is charged for "
+            "what it leaves; false judges the output on its own covered range.");
 DEFINE_bool(whole_surface, false,
             "Deviation grid over the whole surface (u in [0, 1]) instead of the u range the "
             "input covers; smooth judges its output on the same range as the input.");

@@ -14,6 +14,17 @@
 namespace tpopt {
 namespace {
 
+// A 41-pose DPO path over the whole impeller blade (u in [0, 1]).
+ToolPath ImpellerDpo(RuledSurface* surface, Machine* machine) {
+  testing::LoadImpellerBench(surface, machine);
+  FlankPathOptions g;
+  g.poses = 41;
+  g.strategy = FlankStrategy::kDoublePointOffset;
+  ToolPath path;
+  EXPECT_TRUE(GenerateFlankPath(*surface, g, &path).ok());
+  return path;
+}
+
 // With judge_on_input_range the output is judged on the grid of the
 // input's covered range, point by point, whatever range the output itself
 // covers: the high-accuracy solve of this path starting at u = 0.25 moves
@@ -21,13 +32,7 @@ namespace {
 TEST(SmoothingPipelineTest, OutputIsJudgedOnTheInputsRange) {
   RuledSurface surface;
   Machine machine;
-  testing::LoadImpellerBench(&surface, &machine);
-  FlankPathOptions g;
-  g.poses = 41;
-  g.strategy = FlankStrategy::kDoublePointOffset;
-  ToolPath full;
-  ASSERT_TRUE(GenerateFlankPath(surface, g, &full).ok());
-  ToolPath input = full;
+  ToolPath input = ImpellerDpo(&surface, &machine);
   input.poses.erase(input.poses.begin(), input.poses.begin() + 10);  // u from 0.25
   SmoothingSettings settings;
   settings.mode = SmoothingMode::kHighAccuracy;
@@ -46,6 +51,50 @@ TEST(SmoothingPipelineTest, OutputIsJudgedOnTheInputsRange) {
     EXPECT_EQ(m->deviation->u, in.u);
     EXPECT_EQ(m->deviation->v, in.v);
   }
+}
+
+// Default settings judge on the input's range (issue 16, item 4): the
+// high-accuracy output of a DPO path over u in [0, 1] pulls its end
+// contacts inwards, so the old default (each path on its own range) would
+// judge it on a shorter grid that never sees the end rulings it leaves.
+TEST(SmoothingPipelineTest, ByDefaultAnOutputShortOfTheEndsIsChargedForThem) {
+  RuledSurface surface;
+  Machine machine;
+  const ToolPath input = ImpellerDpo(&surface, &machine);
+  double in_lo = 0, in_hi = 0, out_lo = 0, out_hi = 0;
+  ASSERT_TRUE(CoveredRangeU(surface, input, &in_lo, &in_hi));
+  ASSERT_NEAR(in_lo, 0.0, 1e-9);
+  ASSERT_NEAR(in_hi, 1.0, 1e-9);
+  SmoothingSettings settings;  // judge_on_input_range left at its default
+  settings.mode = SmoothingMode::kHighAccuracy;
+  settings.accept_over_tolerance = true;
+  settings.deviation.samples_u = 30;
+  settings.deviation.samples_v = 5;
+  SmoothingResult result;
+  const Status s = RunSmoothing({&input, &surface, &*input.cutter, &machine}, settings, &result);
+  ASSERT_TRUE(s.ok()) << s.message();
+  ASSERT_TRUE(CoveredRangeU(surface, result.output, &out_lo, &out_hi));
+  ASSERT_GT(out_lo - in_lo + in_hi - out_hi, 1e-4) << "the output no longer retreats";
+  // The report's deviation against the output evaluated afresh on the
+  // input's range, and against the output's own range.
+  DeviationOptions on_input = settings.deviation;
+  on_input.u_min = in_lo;
+  on_input.u_max = in_hi;
+  DeviationOptions on_own = settings.deviation;
+  on_own.u_min = out_lo;
+  on_own.u_max = out_hi;
+  PathMetrics fresh, own;
+  ASSERT_TRUE(EvaluatePath(result.output, machine, &surface, *input.cutter, on_input,
+                           settings.motion, &fresh)
+                  .ok());
+  ASSERT_TRUE(EvaluatePath(result.output, machine, &surface, *input.cutter, on_own,
+                           settings.motion, &own)
+                  .ok());
+  const DeviationReport& report = *result.output_metrics.deviation;
+  EXPECT_NEAR(report.u.front(), 0.0, 1e-12);
+  EXPECT_NEAR(report.u.back(), 1.0, 1e-12);
+  EXPECT_NEAR(WorstDeviationMm(result.output_metrics), WorstDeviationMm(fresh), 1e-9);
+  EXPECT_NE(report.u, own.deviation->u);  // what the old default reported on
 }
 
 // Random case 176 covers u from 0.0032 to 1, where the input's grid's last

@@ -89,12 +89,9 @@ struct SmoothingSettings {
   // Judge the initial guess and the output on the grid of the input's
   // covered range (CoveredRangeU) instead of each path's own, so that a
   // smoothed path that retreats from the surface's ends is charged for what
-  // it leaves (issue 16, item 4). Off by default on this branch only
-  // because the high-accuracy solve still leaves 0.012-0.018 mm at the end
-  // ruling's foot (u = 1, v = 0) of the presets' blade cases, which the
-  // tolerance check then refuses; the solver fixes of issue 16 (tip height,
-  // tolerance as a constraint) are to turn it on.
-  bool judge_on_input_range = false;
+  // it leaves (issue 16, item 4): a judge never takes its frame from what it
+  // judges. Off gives the old judging of each path on its own range.
+  bool judge_on_input_range = true;
   bool schedule_feed = true;
   FeedScheduleOptions feed;
   // Also the interpolation model of the high-accuracy cost (its
