@@ -278,6 +278,15 @@ TEST(AssignJointsTest, AProgramThatChangesBranchAtAToolChangeKeepsItsJoints) {
   as_programmed[2] = {-79.2, 13};
   as_programmed[4] = {39, -117};
   ExpectJointsDeg(Machine(), turned, as_programmed);
+  // The same change of branch inside a cut (a feed move, not a rapid, link
+  // or held move) stays refused: a smoother would cut across its half turn.
+  ToolPath in_cut = ProgrammedPath(program);
+  in_cut.poses[3].rapid = false;
+  std::vector<JointVector> j;
+  const Status s = Machine().AssignJoints(in_cut, &j);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("change of branch away from the pole"), std::string::npos)
+      << s.message();
 }
 
 TEST(AssignJointsTest, ABoundedTravelNamesItsLimitsAndTheReasonForEachBranch) {

@@ -130,10 +130,14 @@ bool LeastMotionAngles(const ToolPose* poses, size_t n, const AxisLimits& a_lim,
         }
         // A change of branch away from the pole is a half turn of C that
         // tpopt never chooses; into a pose whose branch the program fixed
-        // (its kept joints) it is the program's own motion (at a tool
-        // change or a rapid between cuts, say), and refusing it would leave
-        // no sequence at all, whatever the travel.
-        const bool program_changes_branch = !cand.allowed[1 - b];
+        // (its kept joints) by a positioning move (a rapid, a link, or the
+        // move after a tool change or another block, all kept as
+        // programmed) it is the program's own motion, and refusing it would
+        // leave no sequence at all, whatever the travel. Inside a cut it
+        // stays refused: a smoother would cut across that half turn.
+        const ToolPose& here = poses[i];
+        const bool program_changes_branch =
+            !cand.allowed[1 - b] && (here.rapid || here.link || here.held);
         if (p != b && dc > kPi / 2 && !program_changes_branch) continue;
         const double step = prev_cost[p] + std::abs(cand.a_rad[b] - prev.a_rad[p]) + dc;
         if (step < cost[b]) {
