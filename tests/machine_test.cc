@@ -259,6 +259,67 @@ TEST(AssignJointsTest, AProgramOnThePositiveBranchKeepsIt) {
   ExpectJointsDeg(Machine(), path, {{20, 40}, {21, 45}, {20, 50}});
 }
 
+TEST(AssignJointsTest, AProgramThatChangesBranchAtAToolChangeKeepsItsJoints) {
+  // Tool 1 cuts on the negative branch (A -79.6), tool 2, after the tool
+  // change's rapid, on the positive one (A +38.98) with C more than a quarter
+  // turn away: a change of branch away from the pole, but the program's
+  // own, so on a machine with unlimited A every pose keeps its joints (it
+  // was refused as "outside the A travel [-inf, inf]"), and so it is with a
+  // cut between whose axes a smoother turned.
+  const std::vector<ProgrammedPose> program = {{true, -79.6, 10},  {false, -79.6, 12},
+                                               {false, -79.0, 14}, {true, 38.98, -120},
+                                               {false, 38.98, -118}, {false, 39.5, -116}};
+  std::vector<std::array<double, 2>> as_programmed;
+  for (const ProgrammedPose& p : program) as_programmed.push_back({p.a_deg, p.c_deg});
+  ExpectJointsDeg(Machine(), ProgrammedPath(program), as_programmed);
+  ToolPath turned = ProgrammedPath(program);
+  turned.poses[2].a_w = AnglesToAxis(-79.2 * kDeg, 13 * kDeg);
+  turned.poses[4].a_w = AnglesToAxis(39 * kDeg, -117 * kDeg);
+  as_programmed[2] = {-79.2, 13};
+  as_programmed[4] = {39, -117};
+  ExpectJointsDeg(Machine(), turned, as_programmed);
+  // The same change of branch inside a cut (a feed move, not a rapid, link
+  // or held move) stays refused: a smoother would cut across its half turn.
+  ToolPath in_cut = ProgrammedPath(program);
+  in_cut.poses[3].rapid = false;
+  std::vector<JointVector> j;
+  const Status s = Machine().AssignJoints(in_cut, &j);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("change of branch away from the pole"), std::string::npos)
+      << s.message();
+}
+
+TEST(AssignJointsTest, ABoundedTravelNamesItsLimitsAndTheReasonForEachBranch) {
+  // The same program on A in [-100, 30]: tool 2's A +38.98 is beyond the
+  // travel (and -38.98, inside it, is not the program's branch).
+  Machine m;
+  m.limits[kA].min = -100 * kDeg;
+  m.limits[kA].max = 30 * kDeg;
+  std::vector<JointVector> j;
+  Status s = m.AssignJoints(
+      ProgrammedPath({{true, -79.6, 10}, {false, -79.6, 12}, {true, 38.98, -120}}), &j);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("pose 2 (line 0): A = 38.98 deg is outside the A travel [-100, 30] "
+                             "deg, and A = -38.98 deg on the other branch is not the branch the "
+                             "program gives"),
+            std::string::npos)
+      << s.message();
+  // A program on the negative branch whose next pose a smoother turned to
+  // 40 deg from +Z, C nearly the same, on A in [-30, 50]: only the positive
+  // branch fits it, and tpopt does not change branch away from the pole.
+  m.limits[kA].min = -30 * kDeg;
+  m.limits[kA].max = 50 * kDeg;
+  ToolPath path = ProgrammedPath({{true, -20, 10}, {false, -20, 12}});
+  path.poses[1].a_w = AnglesToAxis(-40 * kDeg, 12 * kDeg);
+  s = m.AssignJoints(path, &j);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("pose 1 (line 0): A = -40 deg is outside the A travel [-30, 50] deg"),
+            std::string::npos)
+      << s.message();
+  EXPECT_NE(s.message().find("change of branch away from the pole"), std::string::npos)
+      << s.message();
+}
+
 TEST(CheckTravelTest, NamesThePoseTheAxisTheValueAndTheTravel) {
   Machine m;
   m.limits[kX].min = -10.0;

@@ -692,9 +692,29 @@ TEST(TpoptCliTest, MsysBringsTheSurfaceIntoTheProgramsFrame) {
 // DPO path of its own radius (R 4 over u < 0.5, R 2 over the rest): the tool
 // table sizes them, and both evaluate and smooth judge each move with its
 // own tool's cutter. Given one cutter (R 4) for both, T2's moves cut 2 mm in.
+// A move with its rotary words on the other branch, (-A, C + 180 deg):
+// the same tool axis, written to the same digits.
+std::string OnTheOtherBranch(const std::string& line) {
+  std::istringstream in(line);
+  std::string out, word;
+  while (in >> word) {
+    if (word[0] == 'A' || word[0] == 'C') {
+      const double v = std::stod(word.substr(1));
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%c%.6f", word[0], word[0] == 'A' ? -v : v + 180.0);
+      word = buf;
+    }
+    out += (out.empty() ? "" : " ") + word;
+  }
+  return out;
+}
+
 TEST(TpoptCliTest, ToolTableSizesAGcodeProgramsTools) {
   TempDir dir;
   std::string program = "G21 G90 G17 G40 G49 G80\nG94\n";
+  // The same program with T2's moves on the other branch of A (A +39
+  // against T1's -80, C half a turn round at the tool change).
+  std::string flipped = program;
   for (int t = 0; t < 2; ++t) {
     const std::string radius = t == 0 ? "4" : "2";
     const std::string cls = dir.File("g" + radius + ".cls"), ngc = dir.File("g" + radius + ".ngc");
@@ -705,6 +725,7 @@ TEST(TpoptCliTest, ToolTableSizesAGcodeProgramsTools) {
     r = RunCommand(Tpopt("smooth --mode=none --in=" + cls + " --out=" + ngc + " --quiet"));
     ASSERT_EQ(r.exit_code, 0) << r.output;
     program += "T" + std::to_string(t + 1) + " M6\n";
+    flipped += "T" + std::to_string(t + 1) + " M6\n";
     int move = 0;
     for (std::string line : Lines(ngc)) {
       if (line.rfind("G0 X", 0) != 0 && line.rfind("G1 X", 0) != 0) continue;
@@ -712,11 +733,16 @@ TEST(TpoptCliTest, ToolTableSizesAGcodeProgramsTools) {
       const bool first = t == 0 ? move == 0 : move == 20;
       ++move;
       if (!mine) continue;
-      if (first) line = "G0" + line.substr(2, line.find(" F") - 2) + "\nF1000";
+      std::string other = t == 1 ? OnTheOtherBranch(line) : line;
+      for (std::string* l : {&line, &other}) {
+        if (first) *l = "G0" + l->substr(2, l->find(" F") - 2) + "\nF1000";
+      }
       program += line + "\n";
+      flipped += other + "\n";
     }
   }
   program += "M2\n";
+  flipped += "M2\n";
   const std::string in = dir.File("two_tools.ngc"), table = dir.File("tools.tbl");
   std::ofstream(in) << program;
   std::ofstream(table) << "; hand-written\nT1 P1 D8 Z50 ;8 mm end mill\nT2 P2 D4 Z40 ;4 mm\n";
@@ -778,6 +804,24 @@ TEST(TpoptCliTest, ToolTableSizesAGcodeProgramsTools) {
       if (line.rfind("G1 X", 0) == 0) continue;
       EXPECT_NE(std::find(b.begin(), b.end(), line), b.end()) << line;
     }
+  }
+  // The program's own change of branch at the tool change: read and
+  // smoothed on a machine with unlimited A (it was refused as "outside
+  // the A travel [-inf, inf]"), T2's moves kept on the branch written.
+  const std::string in_flipped = dir.File("two_tools_flipped.ngc");
+  std::ofstream(in_flipped) << flipped;
+  r = RunCommand(Tpopt("evaluate --in=" + in_flipped + " --surface=" + kBlade + " --tool_table=" +
+                       table + " --report=" + report + " --quiet"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NEAR(worst(ReadJson(report)), input_worst, 1e-6);
+  const std::string out_flipped = dir.File("flipped_spline.ngc");
+  r = RunCommand(Tpopt("smooth --mode=spline --in=" + in_flipped + " --surface=" + kBlade +
+                       " --tool_table=" + table + " --out=" + out_flipped + " --quiet"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<std::string> b = Lines(out_flipped);
+  for (const std::string& line : Lines(in_flipped)) {
+    if (line.rfind("G1 X", 0) == 0) continue;
+    EXPECT_NE(std::find(b.begin(), b.end(), line), b.end()) << line;
   }
   // A bad table line: refused naming the file, the line and the word.
   std::ofstream(table) << "T1 P1 D8\nT2 P2 Dx4\n";

@@ -88,7 +88,9 @@ PoseAngles CandidateAngles(const ToolPose& pose) {
 // C by half a turn, which is forbidden, so the whole path stays on one
 // branch; at a pass over (or near) the pole the two branches meet, and
 // following the motion continuously means the sign of A changes, which the
-// programme allows when the joint step stays below a quarter turn of C.
+// programme allows when the joint step stays below a quarter turn of C. A
+// pose that keeps its programmed joints may be reached on its branch from
+// the other one anywhere: that change is the program's, not a choice.
 // Undefined C (exactly at the pole) holds the previous C. C comes out wrapped
 // to (-pi, pi]. Returns false when no sequence keeps A inside the travel.
 //
@@ -126,7 +128,17 @@ bool LeastMotionAngles(const ToolPose* poses, size_t n, const AxisLimits& a_lim,
         } else if (!std::isnan(c_prev)) {
           dc = std::abs(WrapPi(c_here - c_prev));
         }
-        if (p != b && dc > kPi / 2) continue;
+        // A change of branch away from the pole is a half turn of C that
+        // tpopt never chooses; into a pose whose branch the program fixed
+        // (its kept joints) by a positioning move (a rapid, a link, or the
+        // move after a tool change or another block, all kept as
+        // programmed) it is the program's own motion, and refusing it would
+        // leave no sequence at all, whatever the travel. Inside a cut it
+        // stays refused: a smoother would cut across that half turn.
+        const ToolPose& here = poses[i];
+        const bool program_changes_branch =
+            !cand.allowed[1 - b] && (here.rapid || here.link || here.held);
+        if (p != b && dc > kPi / 2 && !program_changes_branch) continue;
         const double step = prev_cost[p] + std::abs(cand.a_rad[b] - prev.a_rad[p]) + dc;
         if (step < cost[b]) {
           cost[b] = step;
@@ -299,14 +311,26 @@ Status Machine::AssignRotaryAngles(const ToolPath& path, size_t first, size_t en
       err << "the C rotation of the path (unwrapped) does not fit the C travel ["
           << limits[kC].min * kRadToDeg << ", " << limits[kC].max * kRadToDeg << "] deg";
     } else {
-      // Name the pose where the branch that gets furthest leaves the travel.
+      // Name the pose where the branch that gets furthest stops, and why
+      // each branch is out there: the travel, the program's own branch, or
+      // (the other branch fitting there) a change of branch away from the
+      // pole, which was needed to reach it.
       const int b = (i0 < 0 || (i1 >= 0 && i1 > i0)) ? 1 : 0;
       const int i = std::max(b == 0 ? i0 : i1, 0);
       const PoseAngles cand = CandidateAngles(poses[i]);
+      std::ostringstream travel;
+      travel << "outside the A travel [" << limits[kA].min * kRadToDeg << ", "
+             << limits[kA].max * kRadToDeg << "] deg";
+      const auto why = [&](int branch) -> std::string {
+        if (!limits[kA].InTravel(cand.a_rad[branch])) return travel.str();
+        if (!cand.allowed[branch]) return "not the branch the program gives";
+        return "inside the travel but reached only by a change of branch away from the pole";
+      };
+      const int first_named = cand.allowed[b] ? b : 1 - b;  // the program's branch first
       err << "pose " << i << " (line " << poses[i].source_line << "): A = "
-          << cand.a_rad[b] * kRadToDeg << " deg (or " << cand.a_rad[1 - b] * kRadToDeg
-          << " deg on the other branch) is outside the A travel [" << limits[kA].min * kRadToDeg
-          << ", " << limits[kA].max * kRadToDeg << "] deg";
+          << cand.a_rad[first_named] * kRadToDeg << " deg is " << why(first_named)
+          << ", and A = " << cand.a_rad[1 - first_named] * kRadToDeg
+          << " deg on the other branch is " << why(1 - first_named);
     }
     return Status::Error(err.str());
   }

@@ -139,7 +139,10 @@ class Machine {
   // the poses after it are unwrapped from there, and a kept pose after a
   // kept pose keeps the program's step of C. A path with programmed joints
   // is not shifted into the C travel (CheckTravel judges it); a path without
-  // any gets the rule above.
+  // any gets the rule above. A kept pose is on the program's branch, and the
+  // path may reach it from the other branch anywhere (a program that
+  // changes branch at a tool change, say): that half turn of C is the
+  // program's motion, not a choice.
   //
   // Singularity rule: where sin A < kSingularSinA (the axis within 2e-4 deg
   // of +Z) C is undefined, so the pose (unless it keeps programmed joints)
@@ -150,8 +153,10 @@ class Machine {
   // motion and AxisMetrics reports it, and `warning` (if given) names the
   // pose with the smallest |sin A| when it lies within 1 deg of the pole.
   //
-  // Fails (naming the pose index, its source line and the A value) when no
-  // branch keeps A inside the travel, or when a pose's axis is not unit.
+  // Fails (naming the pose index, its source line, both branches' A, the
+  // travel and why each branch fails there) when no sequence keeps A inside
+  // the travel, which an unbounded A travel always allows, or when a pose's
+  // axis is not unit.
   Status AssignJoints(const ToolPath& path, std::vector<JointVector>* joints,
                       std::string* warning = nullptr) const;
 
