@@ -101,6 +101,14 @@ Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
   // input's (with the input's deviation), and solves repeated stiffer.
   row.message = "runs kept as input " + std::to_string(result.runs_kept_as_input) +
                 ", stiffer solves " + std::to_string(result.stiffer_solves);
+  for (const KeptRun& kept : result.runs_kept) {
+    char why[200];
+    std::snprintf(why, sizeof(why), "; poses %d-%d %s%s %.3g->%.3g at u %.3f v %.3f",
+                  kept.first_line, kept.last_line, kept.reason.c_str(), kept.axis.c_str(),
+                  kept.reason == "tolerance" ? kept.input_mm : kept.input_peak,
+                  kept.reason == "tolerance" ? kept.worst_mm : kept.smoothed_peak, kept.u, kept.v);
+    row.message += why;
+  }
   const MotionReport& out = result.output_metrics.motion;
   row.dev_ratio = Ratio(WorstDeviationMm(result.output_metrics), WorstDeviationMm(dpo));
   row.a_ratio = Ratio(out.axes[kA].peak_second_derivative_per_mm2,

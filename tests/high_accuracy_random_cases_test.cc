@@ -17,6 +17,7 @@
 #include "model/eval/random_cases.h"
 #include "model/path/rail_projection.h"
 #include "solver/smooth/smoothing_pipeline.h"
+#include "solver/smooth/tolerance_promise.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -131,28 +132,35 @@ TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
                                  << " deg from its input's";
 }
 
-// Where the tolerance rounds leave a few grid points beyond the tolerance
-// that the input was within (seed 1: 6 of 4,200 points, 0.0119 mm; seed 22:
-// 2 points, 0.0132 mm), the runs that reach them go back as programmed
-// instead of the path being refused (issue 17's rule: no refusal for what
-// the input did not do). Both were refused before. The brute-force judge
-// then finds no point beyond both the tolerance and the input.
+// Where the tolerance rounds leave grid points beyond the tolerance that
+// the input held across the moves that cut them (seed 33: 0.0114 mm at
+// u 0.58 near the floor; seed 46: 0.0119 mm at u 0.39 on it, where the
+// input is within 1e-5 mm all along), the runs that reach them go back as
+// programmed instead of the path being refused (issue 17's rule: no
+// refusal for what the input did not do). The brute-force judge then finds
+// no point beyond both the tolerance and the input's allowance
+// (solver/smooth/tolerance_promise.h). (Seeds 1 and 22, this test's cases
+// while the promise held each grid point to the input's own deviation
+// there, now keep their solves.)
 TEST(HighAccuracyRandomCasesPutBackTest, RunsGoBackWhereTheToleranceRoundsLeavePointsBeyond) {
-  for (unsigned seed : {1u, 22u}) {
+  for (unsigned seed : {33u, 46u}) {
     RandomCase c;
     SmoothingResult result;
     ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(seed, &c, &result));
-    EXPECT_GT(result.runs_kept_as_input, 0);
+    EXPECT_GT(result.runs_kept_as_input, 0) << "seed " << seed;
     double u_min = 0, u_max = 0;
     ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
     const DeviationReport in = Brute(c, c.cam_path, u_min, u_max);
     const DeviationReport out = Brute(c, result.output, u_min, u_max);
     ASSERT_EQ(in.deviation_mm.size(), out.deviation_mm.size());
+    const std::vector<double> allowance =
+        InputAllowance(in, CuttingContactU(c.surface, c.cam_path));
     const double tolerance_mm = HighAccuracyOptions().tolerance_mm;
     for (size_t k = 0; k < out.deviation_mm.size(); ++k) {
       const double d = std::abs(out.deviation_mm[k]);
-      EXPECT_TRUE(d <= tolerance_mm || d <= std::abs(in.deviation_mm[k]) + 1e-6)
-          << "grid point " << k << ": " << d << " mm, input " << in.deviation_mm[k] << " mm";
+      EXPECT_TRUE(d <= tolerance_mm || d <= allowance[k] + 1e-6)
+          << "seed " << seed << ", grid point " << k << ": " << d << " mm, input "
+          << in.deviation_mm[k] << " mm, allowance " << allowance[k] << " mm";
     }
   }
 }

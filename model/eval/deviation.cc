@@ -615,19 +615,26 @@ Status MakeMotion(const ToolPath& path, const Machine* machine,
 
 }  // namespace
 
+std::vector<double> CuttingContactU(const RuledSurface& surface, const ToolPath& path) {
+  const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), path);
+  std::vector<double> cutting;
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    // A pose takes part in the move out of it or into it (as
+    // Motion::FindMoves: every move but a rapid cuts).
+    const bool out = i + 1 < path.poses.size() && !path.poses[i + 1].rapid;
+    const bool in = i > 0 && !path.poses[i].rapid;
+    if (out || in) cutting.push_back(u[i]);
+  }
+  return cutting;
+}
+
 bool CoveredRangeU(const RuledSurface& surface, const ToolPath& path,
                    double* u_min, double* u_max) {
   CHECK(u_min != nullptr && u_max != nullptr);
-  const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), path);
-  double lo = kInf, hi = -kInf;
-  for (size_t i = 0; i + 1 < path.poses.size(); ++i) {
-    if (path.poses[i + 1].rapid) continue;  // as Motion::FindMoves
-    lo = std::min({lo, u[i], u[i + 1]});
-    hi = std::max({hi, u[i], u[i + 1]});
-  }
-  *u_min = lo;
-  *u_max = hi;
-  return lo <= hi;
+  const std::vector<double> u = CuttingContactU(surface, path);
+  *u_min = u.empty() ? kInf : *std::min_element(u.begin(), u.end());
+  *u_max = u.empty() ? -kInf : *std::max_element(u.begin(), u.end());
+  return !u.empty();
 }
 
 bool DeviationOptions::IsValid(std::string* why) const {

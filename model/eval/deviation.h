@@ -104,6 +104,10 @@ struct DeviationReport {
 bool CoveredRangeU(const RuledSurface& surface, const ToolPath& path,
                    double* u_min, double* u_max);
 
+// The contact u on rail 0 (as above) of every pose of `path` that takes part
+// in a cutting move, in path order.
+std::vector<double> CuttingContactU(const RuledSurface& surface, const ToolPath& path);
+
 // Evaluates the deviation of `path` cut with `cutter` from `surface` on the
 // grid of `options`. `machine` may be null (tip linear, axis slerp, see
 // above); otherwise the joints come from machine->AssignJoints. Fails, with

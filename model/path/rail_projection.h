@@ -9,15 +9,9 @@
 // rail's end near it. So where a run's median overhang
 // h = (C1(u) - p_w_tip) . a_w is more than a noise-level 0.25 mm, the axis
 // point x = p_w_tip + h a_w takes the tip's place. (A tip above the floor,
-// h < 0, is the cutter's point nearest to it, and keeps its own foot.)
-// CAM also writes flank paths with the tip below the floor (the flute
-// overhanging rail 0 by 1-3 mm), where the tip's foot lies off the contact
-// ruling by the overhang times the axis' lean along the rail, and past the
-// rail's end near it. So the point of the axis level with C1(u),
-//   x(u) = p_w_tip + ((C1(u) - p_w_tip) . a_w) a_w,
-// takes the tip's place: (x(u) - C1(u)) . C1'(u) = 0. For a tip on the
-// floor (SPO, and the U/V-distorted paths of model/path/path_generator.h) x is
-// the tip itself.
+// h < 0, is the cutter's point nearest to it, and keeps its own foot.) For a
+// tip on the floor (SPO, and the U/V-distorted paths of
+// model/path/path_generator.h) x is the tip itself.
 #ifndef TPOPT_MODEL_RAIL_PROJECTION_H_
 #define TPOPT_MODEL_RAIL_PROJECTION_H_
 

@@ -11,6 +11,7 @@
 #include "model/machine/axis_metrics.h"
 #include "model/path/rail_projection.h"
 #include "solver/smooth/surface_placement.h"
+#include "solver/smooth/tolerance_promise.h"
 #include "solver/smooth/both_ways_round_poles.h"
 
 namespace tpopt {
@@ -23,42 +24,6 @@ Status WithinTravel(const Machine& machine, const ToolPath& path) {
   Status s = machine.AssignJoints(path, &joints);
   if (s.ok()) s = machine.CheckTravel(path, joints);
   return s;
-}
-
-// The stated tolerance is a promise about what the smoother does to the
-// path, judged on the exact swept envelope (not the solver's sample points):
-// no point of the surface may end up farther from the cutter than the
-// tolerance unless the input was farther still there (at poses the smoother
-// must hold, such as the targets of rapids, the input's error stands).
-// Returns the grid points (indices into out.deviation_mm) that break it;
-// `slack_mm` is how far past the input's error counts as the input's (the
-// same moves evaluated again can differ in the last bits).
-std::vector<size_t> BeyondTolerance(const DeviationReport& in, const DeviationReport& out,
-                                    double tolerance_mm, double slack_mm = 0.0) {
-  CHECK_EQ(in.deviation_mm.size(), out.deviation_mm.size());
-  std::vector<size_t> beyond;
-  for (size_t k = 0; k < out.deviation_mm.size(); ++k) {
-    const double d = std::abs(out.deviation_mm[k]);
-    if (d > tolerance_mm && d > std::abs(in.deviation_mm[k]) + slack_mm) beyond.push_back(k);
-  }
-  return beyond;
-}
-
-// Why the result is refused: how many points are beyond, and the worst.
-std::string BeyondToleranceMessage(const DeviationReport& in, const DeviationReport& out,
-                                   const std::vector<size_t>& beyond, double tolerance_mm) {
-  CHECK(!beyond.empty());
-  const size_t worst = *std::max_element(beyond.begin(), beyond.end(), [&](size_t a, size_t b) {
-    return std::abs(out.deviation_mm[a]) < std::abs(out.deviation_mm[b]);
-  });
-  const size_t nv = out.v.size();
-  std::ostringstream err;
-  err << "the best path found is " << std::abs(out.deviation_mm[worst]) << " mm "
-      << (out.deviation_mm[worst] < 0 ? "into" : "short of") << " the surface at (u "
-      << out.u[worst / nv] << ", v " << out.v[worst % nv] << "), where the input was "
-      << std::abs(in.deviation_mm[worst]) << " mm: beyond the tolerance of " << tolerance_mm
-      << " mm at " << beyond.size() << " of " << out.deviation_mm.size() << " grid points";
-  return err.str();
 }
 
 // The tolerance is a constraint, not a weight: the points a solve leaves
@@ -274,7 +239,8 @@ using Evaluator = std::function<Status(const std::string& what, const ToolPath& 
 constexpr double kSameMovesSlackMm = 1e-6;
 
 Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per_min,
-                             NoWorseOn on, double tolerance_mm, const Evaluator& evaluate,
+                             NoWorseOn on, double tolerance_mm,
+                             const std::vector<double>& allowance_mm, const Evaluator& evaluate,
                              std::vector<bool> back, std::vector<KeptRun> why,
                              SmoothingResult* result) {
   const std::vector<size_t> in_first = RunStarts(*job.input);
@@ -291,8 +257,7 @@ Status KeepSolvedRunsNoWorse(const SmoothingJob& job, double default_feed_mm_per
                              composed, &metrics));
     RETURN_IF_ERROR(WithinTravel(*job.machine, composed));
     if (tolerance_mm <= 0.0 || kept == static_cast<int>(back.size()) ||
-        BeyondTolerance(*result->input_metrics.deviation, *metrics.deviation, tolerance_mm,
-                        kSameMovesSlackMm)
+        BeyondTolerance(allowance_mm, *metrics.deviation, tolerance_mm, kSameMovesSlackMm)
             .empty()) {
       result->output = std::move(composed);
       result->output_at_input_feed = std::move(metrics);
@@ -371,6 +336,9 @@ struct SmoothingRun {
   // input's covered range (or the one asked for), never the range a
   // smoothed path happens to cover.
   DeviationOptions deviation;
+  // With a surface, what the input left at each grid point across the move
+  // that cut it (InputAllowance): the tolerance's measure of the input.
+  std::vector<double> input_allowance_mm;
 
   void Stage(const std::string& name) const {
     if (settings.on_stage) settings.on_stage(name);
@@ -419,6 +387,10 @@ Status JudgeInput(SmoothingRun* run) {
   if (s.ok() && job.surface != nullptr && run->settings.judge_on_input_range &&
       std::isnan(run->deviation.u_min)) {
     CoveredRangeU(*job.surface, *job.input, &run->deviation.u_min, &run->deviation.u_max);
+  }
+  if (s.ok() && job.surface != nullptr) {
+    run->input_allowance_mm = InputAllowance(
+        *result->input_metrics.deviation, CuttingContactU(*job.surface, *job.input));
   }
   if (s.ok()) s = WithinTravel(*job.machine, *job.input);
   if (!s.ok()) return Status::Error(s.message());
@@ -502,7 +474,8 @@ Status SolveWithinTolerance(const SmoothingRun& run, const HighAccuracyOptions& 
     if (held->held_to_tolerance) {
       const DeviationReport& in = *result->input_metrics.deviation;
       const DeviationReport& out = *result->output_at_input_feed.deviation;
-      const std::vector<size_t> beyond = BeyondTolerance(in, out, solve_options.tolerance_mm);
+      const std::vector<size_t> beyond =
+          BeyondTolerance(run.input_allowance_mm, out, solve_options.tolerance_mm);
       if (!beyond.empty() && round == kToleranceRounds) {
         double heaviest = 0.0;
         for (const TolerancePoint& p : held->active) heaviest = std::max(heaviest, p.weight);
@@ -622,7 +595,8 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& spline_path,
   no_worse.limits = worse_than_start();
   if (no_worse.d2 || no_worse.limits || !held.beyond_runs.empty()) {
     Status s = KeepSolvedRunsNoWorse(job, settings.feed.default_feed_mm_per_min, no_worse,
-                                     held_to_tolerance ? options.tolerance_mm : 0.0, run.Judge(),
+                                     held_to_tolerance ? options.tolerance_mm : 0.0,
+                                     run.input_allowance_mm, run.Judge(),
                                      held.beyond_runs, held.beyond_why, result);
     if (!s.ok()) {
       return Status::SolverFailure(
@@ -631,7 +605,7 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& spline_path,
     }
   }
   if (!held.beyond_refusal.empty() &&
-      !BeyondTolerance(*result->input_metrics.deviation, *result->output_at_input_feed.deviation,
+      !BeyondTolerance(run.input_allowance_mm, *result->output_at_input_feed.deviation,
                        options.tolerance_mm, kSameMovesSlackMm)
            .empty()) {
     return Status::SolverFailure(held.beyond_refusal);
@@ -670,7 +644,7 @@ Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& set
     return Status::Error("the path has no cutting move to smooth (" + std::to_string(poses.size()) +
                          " poses)");
   }
-  SmoothingRun run{job, settings, result, settings.deviation};
+  SmoothingRun run{job, settings, result, settings.deviation, {}};
   RETURN_IF_ERROR(JudgeInput(&run));
   if (!cuts) {
     // Every feed move is one to keep as programmed (held, such as a
@@ -806,7 +780,7 @@ Status SmoothToolByTool(const SmoothingJob& job, const SmoothingSettings& settin
   if (first.size() == 2) return SmoothWithOneCutter(job, settings, result, nullptr);
 
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
-  SmoothingRun run{job, settings, result, settings.deviation};
+  SmoothingRun run{job, settings, result, settings.deviation, {}};
   RETURN_IF_ERROR(JudgeInput(&run));
 
   ToolPath output = WithoutPoses(input), guesses = WithoutPoses(input);
@@ -901,7 +875,7 @@ Status RunSmoothing(const SmoothingJob& job, const SmoothingSettings& settings,
                       ? SmoothToolByTool(job, settings, result)
                       : SmoothWithOneCutter(job, settings, result, nullptr));
   if (!settings.schedule_feed) return Status::Ok();
-  SmoothingRun run{job, settings, result, settings.deviation};
+  SmoothingRun run{job, settings, result, settings.deviation, {}};
   if (job.surface != nullptr && settings.judge_on_input_range && std::isnan(run.deviation.u_min)) {
     CoveredRangeU(*job.surface, *job.input, &run.deviation.u_min, &run.deviation.u_max);
   }

@@ -77,7 +77,8 @@ struct SmoothingSettings {
   double resample_step_mm = 0.0;
   // High accuracy with a surface: a result that leaves any grid point of
   // the surface farther from the cutter than high_accuracy.tolerance_mm, and
-  // farther than the input left it, is solved again with those points held
+  // farther than the input left it across the move that cut it
+  // (solver/smooth/tolerance_promise.h), is solved again with those points held
   // to the tolerance by penalties of their own (four rounds at most) and
   // then refused (kSolver, nothing to write), unless this is set; then the
   // first solve is reported, not refused.
