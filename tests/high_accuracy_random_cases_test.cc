@@ -133,9 +133,9 @@ TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
 }
 
 // Where the tolerance rounds leave grid points beyond the tolerance that
-// the input held across the moves that cut them (seed 33: 0.0114 mm at
-// u 0.58 near the floor; seed 46: 0.0119 mm at u 0.39 on it, where the
-// input is within 1e-5 mm all along), the runs that reach them go back as
+// the input held across the moves that cut them (seed 33: 0.0116 mm at
+// u 0.955 near the floor; seed 57: 0.0193 mm at the end ruling's foot, where
+// the input is exact), the runs that reach them go back as
 // programmed instead of the path being refused (issue 17's rule: no
 // refusal for what the input did not do). The brute-force judge then finds
 // no point beyond both the tolerance and the input's allowance
@@ -143,7 +143,7 @@ TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
 // while the promise held each grid point to the input's own deviation
 // there, now keep their solves.)
 TEST(HighAccuracyRandomCasesPutBackTest, RunsGoBackWhereTheToleranceRoundsLeavePointsBeyond) {
-  for (unsigned seed : {33u, 46u}) {
+  for (unsigned seed : {33u, 57u}) {
     RandomCase c;
     SmoothingResult result;
     ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(seed, &c, &result));
@@ -163,6 +163,35 @@ TEST(HighAccuracyRandomCasesPutBackTest, RunsGoBackWhereTheToleranceRoundsLeaveP
           << in.deviation_mm[k] << " mm, allowance " << allowance[k] << " mm";
     }
   }
+}
+
+// Seed 46 (near the pole; the input exact along the floor): a point of the
+// floor the solve gouged from a neighbouring pose stayed 0.0119 mm beyond
+// the tolerance through four rounds at up to 1000 times the surface's
+// weight, and the whole run went back with the input's 0.87 mm, because a
+// held point was held only on the move whose rulings bracket it. Held also
+// as a guard at the poses within reach, it is mended in the rounds: the
+// solve is kept, and the brute-force judge finds the promise kept.
+TEST(HighAccuracyRandomCasesPutBackTest, APointGougedFromANeighbouringPoseIsHeldToTheTolerance) {
+  RandomCase c;
+  SmoothingResult result;
+  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(46, &c, &result));
+  EXPECT_EQ(result.runs_kept_as_input, 0);
+  EXPECT_GT(result.tolerance_rounds, 0);
+  double u_min = 0, u_max = 0;
+  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
+  const DeviationReport in = Brute(c, c.cam_path, u_min, u_max);
+  const DeviationReport out = Brute(c, result.output, u_min, u_max);
+  const std::vector<double> allowance =
+      InputAllowance(in, CuttingContactU(c.surface, c.cam_path));
+  const double tolerance_mm = HighAccuracyOptions().tolerance_mm;
+  double excess = 0.0;
+  for (size_t k = 0; k < out.deviation_mm.size(); ++k) {
+    excess = std::max(excess, std::abs(out.deviation_mm[k]) - std::max(tolerance_mm, allowance[k]));
+  }
+  // The brute force samples each move more finely than the pipeline's judge.
+  EXPECT_LE(excess, 1e-3);
+  EXPECT_LT(WorstMm(out), 0.5 * WorstMm(in));
 }
 
 // Where the solve makes a run worse on peak d2 than the input's, it is

@@ -22,9 +22,12 @@
 //
 // With a dead band b > 0 a contact point costs only its excess over b,
 //   r_k = sqrt(w h / (L n)) * sign(d_k) max(|d_k| - b, 0) / tol * (...),
-// the exact penalty of a constraint |d_k| <= b: the points held to the
-// tolerance (solver/smooth/smoothing_pipeline.cc) are pushed inside it, not to
-// zero, so that holding them does not pull the rest of the path off.
+// and a guard point only its overcut beyond b,
+//   r_g = sqrt(w h / (L n)) * min(d_g + b, 0) / tol * overcut_factor,
+// the exact penalties of the constraints |d_k| <= b and d_g >= -b: the
+// points held to the tolerance (solver/smooth/ceres_smoother.cc,
+// AddTolerancePoints) are pushed inside it, not to zero, so that holding
+// them does not pull the rest of the path off.
 //
 // Between poses the pose at fraction lambda of the move i -> i+1 is the
 // controller's (model/machine/interpolation.h): joint, J = (1 - lambda) J_i +
@@ -117,12 +120,13 @@ class DeviationCost {
     // derivatives are exactly zero; a plain double distance finds those, so
     // only the few inside pay for the differentiated one.
     const Eigen::Vector3d tip_value = ValueOf(tip), axis_value = ValueOf(axis);
+    const double band = settings_.dead_band_mm;
     for (const Eigen::Vector3d& q : points_.guard_w) {
-      if (SignedDistanceToFlank<double>(settings_.cutter, q, tip_value, axis_value) >= 0.0) {
+      if (SignedDistanceToFlank<double>(settings_.cutter, q, tip_value, axis_value) >= -band) {
         *r++ = T(0.0);
         continue;
       }
-      const T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis);
+      const T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis) + T(band);
       *r++ = d < T(0.0) ? T(unit * settings_.overcut_factor) * d : T(0.0);
     }
   }
