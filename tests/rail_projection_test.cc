@@ -105,3 +105,28 @@ TEST(RailProjectionTest, TipsBelowTheFloorProjectThroughTheAxis) {
 
 }  // namespace
 }  // namespace tpopt
+
+namespace tpopt {
+namespace {
+
+// A straight rail along x from 0 to 40 mm, the axis +z, tips 3 mm off it in
+// y: lead-in poses 2 and 1 mm before x = 0, the end pose at x = 0, a pose
+// 0.2 mm before it (within the noise level: the end ruling's own), poses
+// inside, and a lead-out 1.5 mm past x = 40.
+TEST(RailProjectionTest, PosesBeyondTheRailsEndsAreTheLeadInAndLeadOut) {
+  BSplineCurve rail;
+  ASSERT_TRUE(BSplineCurve::Create(1, {0, 0, 1, 1}, {{0, 0, 0}, {40, 0, 0}}, "r", &rail).ok());
+  ToolPath path;
+  for (double x : {-2.0, -1.0, -0.2, 0.0, 10.0, 20.0, 40.0, 41.5}) {
+    ToolPose pose;
+    pose.p_w_tip = {x, 3.0, 0.0};
+    path.poses.push_back(pose);
+  }
+  const std::vector<double> u = ProjectPathOntoRail(rail, path);
+  const std::vector<bool> beyond = PosesBeyondRailEnds(rail, path, u);
+  const std::vector<bool> expected = {true, true, false, false, false, false, false, true};
+  EXPECT_EQ(beyond, expected);
+}
+
+}  // namespace
+}  // namespace tpopt

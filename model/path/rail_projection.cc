@@ -121,4 +121,20 @@ std::vector<double> ProjectPathOntoRail(const BSplineCurve& rail, const ToolPath
   return u;
 }
 
+std::vector<bool> PosesBeyondRailEnds(const BSplineCurve& rail, const ToolPath& path,
+                                      const std::vector<double>& u) {
+  const std::vector<double> overhang_mm = RunOverhangs(rail, path, u);
+  std::vector<bool> beyond(path.poses.size(), false);
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    if (u[i] > 0.0 && u[i] < 1.0) continue;
+    const ToolPose& pose = path.poses[i];
+    const double overhang = overhang_mm[i] > kOnTheFloorMm ? overhang_mm[i] : 0.0;
+    const Eigen::Vector3d x = pose.p_w_tip + overhang * pose.a_w;
+    const std::array<Eigen::Vector3d, 4> end = rail.Evaluate(u[i], 1);
+    const Eigen::Vector3d outward = (u[i] <= 0.0 ? -1.0 : 1.0) * end[1].normalized();
+    beyond[i] = (x - end[0]).dot(outward) > kOnTheFloorMm;
+  }
+  return beyond;
+}
+
 }  // namespace tpopt

@@ -46,6 +46,14 @@ std::vector<double> RunOverhangs(const BSplineCurve& rail, const ToolPath& path,
 std::vector<double> ProjectPathOntoRail(const BSplineCurve& rail, const ToolPath& path,
                                         double window_u = 0.05);
 
+// The poses of a lead-in or lead-out that CAM writes beyond an end of the
+// surface: those whose u (ProjectPathOntoRail's, which clamps a foot beyond
+// an end to it) is an end of `rail` and whose axis point level with the
+// floor (as above) lies more than a noise-level 0.25 mm past that end along
+// the rail's tangent there. They touch no ruling of their own.
+std::vector<bool> PosesBeyondRailEnds(const BSplineCurve& rail, const ToolPath& path,
+                                      const std::vector<double>& u);
+
 }  // namespace tpopt
 
 #endif  // TPOPT_MODEL_RAIL_PROJECTION_H_

@@ -171,6 +171,11 @@ struct SmoothingInputs {
 struct SmoothingState {
   std::vector<std::array<double, 5>> poses;  // [A, C, x, y, z] per pose
   std::vector<double> u;                     // contact ruling per pose
+  // Poses of a lead-in or lead-out beyond the surface's ends
+  // (PosesBeyondRailEnds; none without a surface): they start where the
+  // program has them and are held by the smoothness and the walls, not tied
+  // to the end ruling they do not touch.
+  std::vector<bool> beyond_ends;
   std::vector<double> s_mm;                  // arc length of the contact on rail 0
   std::vector<double> t_s;                   // planned time at programmed feed
   // Residual blocks of each family, for per-family cost reports.
