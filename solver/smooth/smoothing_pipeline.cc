@@ -44,8 +44,8 @@ constexpr double kAtRiskFraction = 0.8;
 // `active` (a point held alone hands its excess to the next grid point
 // along u), or raises the penalty of those in it already; and the points
 // `at_risk` (within reach of the tolerance, not beyond it), so that holding
-// one stretch does not push the next one out: round after round a few new
-// points 1-60 % beyond kept a solve from the promise (issue 16, seed 9).
+// one stretch is less apt to push the next one out (issue 16, seed 9: each
+// round 10-48 new points beyond, by 1-60 %).
 void GrowActiveSet(const DeviationReport& out, const std::vector<size_t>& beyond,
                    const std::vector<size_t>& at_risk, std::vector<TolerancePoint>* active) {
   const int nu = static_cast<int>(out.u.size()), nv = static_cast<int>(out.v.size());
@@ -587,7 +587,7 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& spline_path,
   SolveStiffer(run, &options, &held);
   const bool held_to_tolerance = held.held_to_tolerance;
   // The path to be returned. Held to the tolerance it leaves no grid
-  // point beyond both the tolerance and the input, a pointwise promise
+  // point beyond both the tolerance and the input's allowance, a promise
   // that the start, itself beyond the tolerance where a noisy input
   // happened to be within it, need not keep: judged against the start's
   // max |dev| alone, a solve that met it was refused. So there it is worse
