@@ -40,10 +40,7 @@ int RunEvaluate(const Invocation& invocation) {
   }
   LinkMoveOptions links;
   if (s.ok()) s = LinkMoveOptionsFromFlags(&links);
-  if (!s.ok()) {
-    std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
-    return ExitCodeOf(s);
-  }
+  if (!s.ok()) return ReportFailure("evaluate", s);
   s = CheckOutputFolders({FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
   PathMetrics metrics;
@@ -56,10 +53,7 @@ int RunEvaluate(const Invocation& invocation) {
                      motion_options, &metrics);
     if (!s.ok()) s = Status::Error(FLAGS_in + ": " + s.message());
   }
-  if (!s.ok()) {
-    std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
-    return ExitCodeOf(s);
-  }
+  if (!s.ok()) return ReportFailure("evaluate", s);
   nlohmann::json report = MetricsJson(metrics);
   report["tpopt_version"] = kTpoptVersion;
   report["huge_page_malloc"] = HugePageMallocActive();
@@ -91,10 +85,7 @@ int RunEvaluate(const Invocation& invocation) {
     s = WritePictures("tpopt evaluate of " + FLAGS_in, invocation.command_line,
                       {{name, &job.path, &metrics}}, job);
   }
-  if (!s.ok()) {
-    std::fprintf(stderr, "tpopt evaluate: %s\n", s.message().c_str());
-    return ExitCodeOf(s);
-  }
+  if (!s.ok()) return ReportFailure("evaluate", s);
   if (!FLAGS_quiet) std::printf("%s", Summary(FLAGS_in, metrics).c_str());
   if (!travel.ok()) {
     std::fprintf(stderr, "tpopt evaluate: %s: %s (tpopt smooth refuses it)\n", FLAGS_in.c_str(),

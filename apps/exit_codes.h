@@ -3,6 +3,9 @@
 #ifndef TPOPT_APPS_EXIT_CODES_H_
 #define TPOPT_APPS_EXIT_CODES_H_
 
+#include <cstdio>
+#include <string>
+
 #include "model/base/status.h"
 
 namespace tpopt {
@@ -29,6 +32,17 @@ inline ExitCode ExitCodeOf(const Status& status) {
       return kExitBadInput;
   }
   return kExitBadInput;
+}
+
+// A subcommand's failure: prints "tpopt <subcommand>: <message>" on stderr
+// and returns the exit code of `status`.
+inline int ReportFailure(const char* subcommand, const Status& status,
+                         const std::string& message) {
+  std::fprintf(stderr, "tpopt %s: %s\n", subcommand, message.c_str());
+  return ExitCodeOf(status);
+}
+inline int ReportFailure(const char* subcommand, const Status& status) {
+  return ReportFailure(subcommand, status, status.message());
 }
 
 }  // namespace tpopt

@@ -18,10 +18,7 @@ int RunGenerate(const Invocation&) {
   if (s.ok()) s = CheckGcodeFlags();
   FlankPathOptions options;
   if (s.ok()) s = FlankPathOptionsFromFlags(&options);
-  if (!s.ok()) {
-    std::fprintf(stderr, "tpopt generate: %s\n", s.message().c_str());
-    return ExitCodeOf(s);
-  }
+  if (!s.ok()) return ReportFailure("generate", s);
   RuledSurface surface;
   Machine machine;
   ToolPath path;
@@ -29,10 +26,7 @@ int RunGenerate(const Invocation&) {
   if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
   if (s.ok()) s = GenerateFlankPath(surface, options, &path);
   if (s.ok()) s = SaveToolPath(FLAGS_out, machine, path);
-  if (!s.ok()) {
-    std::fprintf(stderr, "tpopt generate: %s\n", s.message().c_str());
-    return ExitCodeOf(s);
-  }
+  if (!s.ok()) return ReportFailure("generate", s);
   if (!FLAGS_quiet) {
     std::fprintf(stderr, "tpopt generate: wrote %zu poses to %s\n", path.poses.size(),
                  FLAGS_out.c_str());

@@ -15,12 +15,6 @@
 namespace tpopt {
 namespace {
 
-// Prints `message` and returns the exit code of `status` (apps/exit_codes.h).
-int Fail(const Status& status, const std::string& message) {
-  std::fprintf(stderr, "tpopt pencil: %s\n", message.c_str());
-  return ExitCodeOf(status);
-}
-
 Status UsageFromFlags(PencilOptions* pencil, bool* bspline, CurveOutputOptions* curve) {
   Status s = Require(FLAGS_surface, "surface");
   if (s.ok()) s = Require(FLAGS_curve, "curve");
@@ -58,7 +52,7 @@ int RunPencil(const Invocation& invocation) {
   CurveOutputOptions curve_options;
   bool bspline = false;
   Status s = UsageFromFlags(&pencil, &bspline, &curve_options);
-  if (!s.ok()) return Fail(s, s.message());
+  if (!s.ok()) return ReportFailure("pencil", s);
 
   PencilJob job;
   Machine machine;
@@ -66,13 +60,13 @@ int RunPencil(const Invocation& invocation) {
   s = LoadBSplineSurface(FLAGS_surface, &job.surface, &cad);
   if (s.ok()) s = CompletePencilJob(FLAGS_curve, pencil.ball_radius_mm, &job);
   if (s.ok()) s = LoadMachine(FLAGS_machine, &machine);
-  if (!s.ok()) return Fail(s, s.message());
+  if (!s.ok()) return ReportFailure("pencil", s);
   std::vector<PencilRun> runs;
   s = GeneratePencilRuns(job.geometry, job.guides, pencil, &runs);
-  if (!s.ok()) return Fail(s, FLAGS_curve + ": " + s.message());
+  if (!s.ok()) return ReportFailure("pencil", s, FLAGS_curve + ": " + s.message());
   PencilFitResult fit;
   s = FitPencilRuns(job.geometry, job.guides, runs, pencil.ball_radius_mm, curve_options, bspline, &fit);
-  if (!s.ok()) return Fail(s, FLAGS_curve + ": " + s.message());
+  if (!s.ok()) return ReportFailure("pencil", s, FLAGS_curve + ": " + s.message());
 
   fit.path.title = "tpopt pencil of " + FLAGS_curve + " on " + FLAGS_surface +
                    " (ball-end, tips = ball centre - radius along the axis)";
@@ -86,7 +80,7 @@ int RunPencil(const Invocation& invocation) {
     if (cad) report["surface_cad"] = CadInfoJson(*cad);
     s = WriteReport(FLAGS_report, report);
   }
-  if (!s.ok()) return Fail(s, s.message());
+  if (!s.ok()) return ReportFailure("pencil", s);
   if (fit.folded_points > 0) {
     std::fprintf(stderr,
                  "warning: at %zu CL points the surface bends tighter than the %.3f mm ball along "

@@ -20,12 +20,6 @@
 namespace tpopt {
 namespace {
 
-// Prints `message` and returns the exit code of `status` (apps/exit_codes.h).
-int Fail(const Status& status, const std::string& message) {
-  std::fprintf(stderr, "tpopt smooth: %s\n", message.c_str());
-  return ExitCodeOf(status);
-}
-
 // Shows the pipeline's stages and Ceres' iterations on `progress`; null
 // detaches them.
 void ReportProgressTo(ProgressDisplay* progress, SmoothingSettings* settings) {
@@ -214,29 +208,32 @@ Status SmoothJob(const Job& job, SmoothingSettings* settings, SmoothingResult* r
 int RunSmooth(const Invocation& invocation) {
   SmoothRequest request;
   Status s = RequestFromFlags(&request);
-  if (!s.ok()) return Fail(s, s.message());
+  if (!s.ok()) return ReportFailure("smooth", s);
   SmoothingSettings& settings = request.settings;
 
   s = CheckOutputFolders({FLAGS_out, FLAGS_report, FLAGS_html, FLAGS_vtk});
   Job job;
   if (s.ok()) s = LoadJob(FLAGS_quiet, request.links, &job);
-  if (!s.ok()) return Fail(s, s.message());
+  if (!s.ok()) return ReportFailure("smooth", s);
   settings.deviation.cutter_per_tool = job.cutter_per_tool;
   SmoothingResult result;
   s = SmoothJob(job, &settings, &result);
   if (!s.ok()) {
-    return Fail(s, s.code() == StatusCode::kSolver ? s.message() + "; nothing written"
-                                                   : FLAGS_in + ": " + s.message());
+    return ReportFailure("smooth", s,
+                         s.code() == StatusCode::kSolver ? s.message() + "; nothing written"
+                                                         : FLAGS_in + ": " + s.message());
   }
   result.output.title = "tpopt smooth --mode=" + FLAGS_mode + " of " + FLAGS_in;
   ToolPath written = result.output;
   std::vector<AptCurveSpan> spans;
   if (request.bspline_output) {
     s = FitToolPathCurves(result.output, request.curve_options, &written, &spans);
-    if (!s.ok()) return Fail(s, FLAGS_out + ": the B-spline fit failed: " + s.message());
+    if (!s.ok()) {
+      return ReportFailure("smooth", s, FLAGS_out + ": the B-spline fit failed: " + s.message());
+    }
   }
   s = WriteOutputs(invocation, job, result, settings.deviation.interpolation, written, spans);
-  if (!s.ok()) return Fail(s, s.message());
+  if (!s.ok()) return ReportFailure("smooth", s);
   if (!FLAGS_quiet) {
     PrintSummary(settings, result);
     if (request.bspline_output) {

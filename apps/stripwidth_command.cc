@@ -142,10 +142,7 @@ int RunStripWidth(const Invocation& invocation) {
   MotionOptions motion_options;
   Status s = OptionsFromFlags(&cutter, &options);
   if (s.ok()) s = MetricOptionsFromFlags(&deviation_options, &motion_options);
-  if (!s.ok()) {
-    std::fprintf(stderr, "tpopt stripwidth: %s\n", s.message().c_str());
-    return ExitCodeOf(s);
-  }
+  if (!s.ok()) return ReportFailure("stripwidth", s);
   StripRun run;
   s = PlanStripRun(cutter, options, deviation_options, motion_options, &run);
   if (s.ok()) s = SaveToolPath(FLAGS_out, run.machine, run.path);
@@ -153,10 +150,7 @@ int RunStripWidth(const Invocation& invocation) {
   if (s.ok() && !FLAGS_report.empty()) {
     s = WriteReport(FLAGS_report, StripReportJson(invocation, cutter, options, run, strips));
   }
-  if (!s.ok()) {
-    std::fprintf(stderr, "tpopt stripwidth: %s\n", s.message().c_str());
-    return ExitCodeOf(s);
-  }
+  if (!s.ok()) return ReportFailure("stripwidth", s);
   if (!FLAGS_quiet) PrintStripSummary(run, strips);
   return kExitSuccess;
 }
