@@ -377,13 +377,12 @@ void AddToleranceFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
 }
 
 // With a surface, a lead-in or lead-out pose beyond its ends is tied to no
-// ruling: held by nothing but the smoothness, the walls and its guards, the
-// tolerance rounds swung some 15 mm off, out of the travel (issue 16). It
-// keeps within kLeadBandMm of its programmed line and within the axis cone
-// of its programmed axis, free to slide along the line: on the 200 random
-// cases that keeps the approach within 1 mm of where the CAM system put it
-// and costs nothing measurable against leaving it free (README, "Random
-// cases").
+// ruling, and held by nothing but the smoothness, the walls and its guards
+// it moved off its programmed line by up to 6.4 mm on the random cases
+// (issue 16): a CAM system's approach, through air it chose. It keeps
+// within kLeadBandMm of that line and within the axis cone of its
+// programmed axis, free to slide along the line (what that costs: README,
+// "Random cases", stop 24).
 constexpr double kLeadBandMm = 1.0;
 
 void AddLeadBandFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
