@@ -183,15 +183,10 @@ TEST(HighAccuracyRandomCasesPutBackTest, APointGougedFromANeighbouringPoseIsHeld
   ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
   const DeviationReport in = Brute(c, c.cam_path, u_min, u_max);
   const DeviationReport out = Brute(c, result.output, u_min, u_max);
-  const std::vector<double> allowance =
-      InputAllowance(in, CuttingContactU(c.surface, c.cam_path));
-  const double tolerance_mm = HighAccuracyOptions().tolerance_mm;
-  double excess = 0.0;
-  for (size_t k = 0; k < out.deviation_mm.size(); ++k) {
-    excess = std::max(excess, std::abs(out.deviation_mm[k]) - std::max(tolerance_mm, allowance[k]));
-  }
   // The brute force samples each move more finely than the pipeline's judge.
-  EXPECT_LE(excess, 1e-3);
+  EXPECT_LE(testing::ExcessOverTolerancePromise(c.surface, c.cam_path, in, out,
+                                                HighAccuracyOptions().tolerance_mm),
+            1e-3);
   EXPECT_LT(WorstMm(out), 0.5 * WorstMm(in));
 }
 

@@ -9,7 +9,6 @@
 #include "model/io/gcode_io.h"
 #include "model/io/linuxcnc_tool_table.h"
 #include "model/path/path_generator.h"
-#include "solver/smooth/tolerance_promise.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -204,17 +203,14 @@ TEST(SmoothingPipelineTest, EachRunIsSmoothedWithItsOwnToolsCutter) {
         ASSERT_TRUE(
             EvaluateDeviationBruteForce(surface, cutter, out, &machine, range, 32, &after).ok());
         double worst_in = 0, worst_out = 0;
+        for (size_t k = 0; k < after.deviation_mm.size(); ++k) {
+          worst_in = std::max(worst_in, std::abs(before.deviation_mm[k]));
+          worst_out = std::max(worst_out, std::abs(after.deviation_mm[k]));
+        }
         // Beyond both the tolerance and what the input left across the move
         // that cut the point (solver/smooth/tolerance_promise.h).
-        const std::vector<double> allowance =
-            InputAllowance(before, CuttingContactU(surface, in));
-        double excess = 0.0;
-        for (size_t k = 0; k < after.deviation_mm.size(); ++k) {
-          const double d = std::abs(after.deviation_mm[k]);
-          worst_in = std::max(worst_in, std::abs(before.deviation_mm[k]));
-          worst_out = std::max(worst_out, d);
-          excess = std::max(excess, d - std::max(tolerance, allowance[k]));
-        }
+        const double excess =
+            testing::ExcessOverTolerancePromise(surface, in, before, after, tolerance);
         std::printf("%s, %s, tool %d (R %g): max |dev| in %.4f, out %.4f mm\n",
                     mode == SmoothingMode::kSpline ? "spline" : "high_accuracy",
                     per_tool ? "a cutter a tool" : "one cutter", t + 1, cutter.radius_mm,
@@ -332,12 +328,8 @@ TEST(SmoothingPipelineTest, ARunEndingAtAToolChangeGoesBackAsProgrammed) {
         EvaluateDeviationBruteForce(surface, cutter, out, &machine, range, 32, &after).ok());
     // Beyond both the tolerance and what the input left across the move
     // that cut the point.
-    const std::vector<double> allowance = InputAllowance(before, CuttingContactU(surface, in));
-    double excess = 0.0;
-    for (size_t k = 0; k < after.deviation_mm.size(); ++k) {
-      excess = std::max(excess,
-                        std::abs(after.deviation_mm[k]) - std::max(tolerance, allowance[k]));
-    }
+    const double excess =
+        testing::ExcessOverTolerancePromise(surface, in, before, after, tolerance);
     // The brute force samples each move 32 times: a micrometre over.
     EXPECT_LE(excess, 1e-3) << "tool " << t + 1;
   }

@@ -5,6 +5,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -21,6 +23,7 @@
 #include "model/io/json_io.h"
 #include "model/eval/random_cases.h"
 #include "solver/smooth/smoothing_pipeline.h"
+#include "solver/smooth/tolerance_promise.h"
 
 namespace tpopt::testing {
 
@@ -138,6 +141,23 @@ inline std::vector<Machine> SharedMachines() {
 inline Status SmoothRandomCase(const RandomCase& c, const SmoothingSettings& settings,
                                SmoothingResult* result) {
   return RunSmoothing({&c.cam_path, &c.surface, &c.cutter, &c.machine}, settings, result);
+}
+
+// How far the smoothed path's deviation `after` goes past the tolerance
+// promise (solver/smooth/tolerance_promise.h) at its worst grid point, mm:
+// max over the grid of |after| - max(tolerance, the input's allowance),
+// the allowance from the input path `input` and its deviation `before` on
+// the same grid. <= 0 where the promise holds everywhere.
+inline double ExcessOverTolerancePromise(const RuledSurface& surface, const ToolPath& input,
+                                         const DeviationReport& before,
+                                         const DeviationReport& after, double tolerance_mm) {
+  const std::vector<double> allowance = InputAllowance(before, CuttingContactU(surface, input));
+  double excess = -tolerance_mm;
+  for (size_t k = 0; k < after.deviation_mm.size(); ++k) {
+    excess = std::max(excess, std::abs(after.deviation_mm[k]) -
+                                  std::max(tolerance_mm, allowance[k]));
+  }
+  return excess;
 }
 
 }  // namespace tpopt::testing

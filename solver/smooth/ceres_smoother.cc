@@ -91,6 +91,13 @@ bool Connected(const ToolPath& path, size_t first, size_t count, StencilBreak br
   return true;
 }
 
+// The arc length pose i stands for in a per-pose family: half the span
+// from the pose before it to the pose after it (one side at the path's ends).
+double PoseShareMm(const SmoothingState& state, size_t i) {
+  const size_t n = state.s_mm.size();
+  return (state.s_mm[std::min(i + 1, n - 1)] - state.s_mm[i > 0 ? i - 1 : 0]) / 2;
+}
+
 template <int kCount>
 std::array<double, kCount> Window(const std::vector<double>& v, size_t first) {
   std::array<double, kCount> out;
@@ -186,7 +193,7 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
       DeviationCost::Points guard = RulingPoints(*in.surface, state->u[i], o.guard_distances_mm, m);
       guard.guard_w.insert(guard.guard_w.end(), guard.contact_w.begin(), guard.contact_w.end());
       guard.contact_w.clear();
-      const double h = (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2;
+      const double h = PoseShareMm(*state, i);
       state->families["deviation"].push_back(problem->AddResidualBlock(
           DeviationCost::CreateAtPose(std::move(guard), settings,
                                       std::sqrt(o.w_deviation * h / (length_mm * m))),
@@ -249,16 +256,11 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
   for (const TolerancePoint& point : *in.tolerance_points) {
     const Eigen::Vector3d q_w = in.surface->Point(point.u, point.v);
     const double scale = std::sqrt(o.w_deviation * point.weight);
-    DeviationCost::Points contact;
+    DeviationCost::Points contact, guard;
     contact.contact_w.push_back(q_w);
+    guard.guard_w.push_back(q_w);
     bool bracketed = false;
-    size_t nearest = path.poses.size();
     for (size_t i = 0; i + 1 < path.poses.size(); ++i) {
-      if (free_pose[i] && !state->beyond_ends[i] &&
-          (nearest == path.poses.size() ||
-           std::abs(state->u[i] - point.u) < std::abs(state->u[nearest] - point.u))) {
-        nearest = i;
-      }
       if (state->beyond_ends[i] || state->beyond_ends[i + 1]) continue;  // cuts in the air
       if (IsPositioningMove(path.poses[i + 1]) || !(free_pose[i] || free_pose[i + 1])) continue;
       const double u0 = state->u[i], u1 = state->u[i + 1];
@@ -269,17 +271,22 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
           DeviationCost::CreateBetweenPoses(contact, settings, scale, lambda), nullptr,
           state->poses[i].data(), state->poses[i + 1].data()));
     }
-    if (!bracketed && path.poses.size() > 0 && free_pose.back() && !state->beyond_ends.back() &&
-        (nearest == path.poses.size() ||
-         std::abs(state->u.back() - point.u) < std::abs(state->u[nearest] - point.u))) {
-      nearest = path.poses.size() - 1;
-    }
     // A point past the contact rulings of every pose (an end ruling the
     // last pose stops a hair short of) is held at the nearest free pose.
-    if (!bracketed && nearest < path.poses.size()) {
-      state->families["tolerance_points"].push_back(problem->AddResidualBlock(
-          DeviationCost::CreateAtPose(contact, settings, scale), nullptr,
-          state->poses[nearest].data()));
+    if (!bracketed) {
+      size_t nearest = path.poses.size();
+      for (size_t i = 0; i < path.poses.size(); ++i) {
+        if (free_pose[i] && !state->beyond_ends[i] &&
+            (nearest == path.poses.size() ||
+             std::abs(state->u[i] - point.u) < std::abs(state->u[nearest] - point.u))) {
+          nearest = i;
+        }
+      }
+      if (nearest < path.poses.size()) {
+        state->families["tolerance_points"].push_back(problem->AddResidualBlock(
+            DeviationCost::CreateAtPose(contact, settings, scale), nullptr,
+            state->poses[nearest].data()));
+      }
     }
     const double speed_mm = std::max(in.surface->rail(0).Evaluate(point.u, 1)[1].norm(), 1e-9);
     const double reach_u = guard_reach_mm / speed_mm;
@@ -288,8 +295,6 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
     };
     for (size_t i = 0; i < path.poses.size(); ++i) {
       if (!near(i)) continue;
-      DeviationCost::Points guard;
-      guard.guard_w.push_back(q_w);
       if (free_pose[i]) {
         state->families["tolerance_points"].push_back(problem->AddResidualBlock(
             DeviationCost::CreateAtPose(guard, settings, scale), nullptr,
@@ -323,8 +328,7 @@ void AddWallFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, doub
   }
   for (size_t i = 0; i < n; ++i) {
     if (!free_pose[i]) continue;
-    const double h = std::max(
-        (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2, kMinStep);
+    const double h = std::max(PoseShareMm(*state, i), kMinStep);
     const double scale = std::sqrt(o.w_walls * h / length_mm);
     WallCost::Walls walls;
     if (any_travel) walls.travel.emplace(in.machine->kinematics, lo, hi, o.travel_margin_mm, scale);
@@ -575,7 +579,7 @@ Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& 
     if (!free_pose[i] || o.w_tip_height <= 0 || in.surface == nullptr || state->beyond_ends[i]) {
       continue;
     }
-    const double h = (state->s_mm[std::min(i + 1, n - 1)] - state->s_mm[i > 0 ? i - 1 : 0]) / 2;
+    const double h = PoseShareMm(*state, i);
     const Eigen::Vector3d floor_w = in.surface->rail(0).Point(state->u[i]);
     state->families["tip_height"].push_back(problem->AddResidualBlock(
         TipHeightCost::Create(floor_w, overhang_mm[i],
