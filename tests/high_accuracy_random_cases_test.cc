@@ -40,11 +40,17 @@ const std::vector<Machine>& SharedMachines() {
 
 double WorstMm(const DeviationReport& r) { return std::max(r.max_overcut_mm, r.max_undercut_mm); }
 
-// Brute-force deviation of `path` on [u_min, u_max].
-DeviationReport Brute(const RandomCase& c, const ToolPath& path, double u_min, double u_max) {
+// Brute-force deviation of `path` on [u_min, u_max], on a coarse grid or
+// (`pipeline_grid`) on the pipeline's own, where the tolerance promise is
+// kept (on a coarser one the input's worst across a move is sampled more
+// sparsely, and its allowance comes out smaller).
+DeviationReport Brute(const RandomCase& c, const ToolPath& path, double u_min, double u_max,
+                      bool pipeline_grid = false) {
   DeviationOptions o;
-  o.samples_u = kSamplesU;
-  o.samples_v = kSamplesV;
+  if (!pipeline_grid) {
+    o.samples_u = kSamplesU;
+    o.samples_v = kSamplesV;
+  }
   o.u_min = u_min;
   o.u_max = u_max;
   o.interpolation = Interpolation::kTcp;  // APT-style CL data
@@ -133,18 +139,18 @@ TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
                                  << " deg from its input's";
 }
 
-// Where the tolerance rounds leave grid points beyond the tolerance that
-// the input held across the moves that cut them (seed 33: 0.0116 mm at
-// u 0.955 near the floor; seed 57: 0.0193 mm at the end ruling's foot, where
-// the input is exact), the runs that reach them go back as
-// programmed instead of the path being refused (issue 17's rule: no
-// refusal for what the input did not do). The brute-force judge then finds
-// no point beyond both the tolerance and the input's allowance
-// (solver/smooth/tolerance_promise.h). (Seeds 1 and 22, this test's cases
-// while the promise held each grid point to the input's own deviation
-// there, now keep their solves.)
+// Where every solve leaves grid points beyond the tolerance that the input
+// held across the moves that cut them (the first, and the retries from the
+// other start and with the held points guarded inside the moves; seed 143:
+// 0.0138 mm at u 0.111, v 0.3, where the input left 0.0121 mm; seed 20:
+// 0.0394 mm at u 0.915 near the floor, the input 0.0115 mm), the runs that
+// reach them go back as programmed instead of the path being refused
+// (issue 17's rule: no refusal for what the input did not do). The
+// brute-force judge then finds no point beyond both the tolerance and the
+// input's allowance (solver/smooth/tolerance_promise.h). (Seeds 33 and 57,
+// this test's cases at stop 24, are now kept by a retry.)
 TEST(HighAccuracyRandomCasesPutBackTest, RunsGoBackWhereTheToleranceRoundsLeavePointsBeyond) {
-  for (unsigned seed : {33u, 57u}) {
+  for (unsigned seed : {143u, 20u}) {
     RandomCase c;
     SmoothingResult result;
     ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(seed, &c, &result));
@@ -164,6 +170,33 @@ TEST(HighAccuracyRandomCasesPutBackTest, RunsGoBackWhereTheToleranceRoundsLeaveP
           << in.deviation_mm[k] << " mm, allowance " << allowance[k] << " mm";
     }
   }
+}
+
+// Seed 57 (overhang 2.8 mm; the input exact along the floor): the first
+// solve left the foot of the u = 1 end ruling 0.0145 mm into the surface
+// through four tolerance rounds, and its run went back with the input's
+// 6.7 x the clean DPO path's max |dev|. Solved again (from the other start,
+// then with the held points guarded inside the moves near them) it keeps
+// the promise, so the solve is kept: the brute-force judge finds it within
+// the clean DPO path's max |dev| and its peaks d2 within 2 x the clean SPO
+// path's.
+TEST(HighAccuracyRandomCasesPutBackTest, ASolveLeftBeyondTheToleranceIsTriedAgainBeforeItGoesBack) {
+  RandomCase c;
+  SmoothingResult result;
+  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(57, &c, &result));
+  EXPECT_EQ(result.runs_kept_as_input, 0);
+  double u_min = 0, u_max = 0;
+  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
+  const DeviationReport in = Brute(c, c.cam_path, u_min, u_max, /*pipeline_grid=*/true);
+  const DeviationReport out = Brute(c, result.output, u_min, u_max, /*pipeline_grid=*/true);
+  EXPECT_LE(testing::ExcessOverTolerancePromise(c.surface, c.cam_path, in, out,
+                                                HighAccuracyOptions().tolerance_mm),
+            1e-3);
+  EXPECT_LE(WorstMm(out), WorstMm(Brute(c, c.clean_dpo, u_min, u_max, /*pipeline_grid=*/true)));
+  const std::array<double, 2> smoothed = PeakSecond(c.machine, result.output);
+  const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
+  EXPECT_LE(smoothed[0], 2 * spo[0]);
+  EXPECT_LE(smoothed[1], 2 * spo[1]);
 }
 
 // Seed 46 (near the pole; the input exact along the floor): a point of the
@@ -283,11 +316,13 @@ INSTANTIATE_TEST_SUITE_P(Passing, HighAccuracyRandomCasesTest,
 //    stop 23, when the lead-out was pulled onto the end ruling), 10 (3.1 x,
 //    2.8 x), 12 (66 x, 18 x), 14 (33 x, 11 x), 18 (2.9 x, 3.6 x), 19 (75 x,
 //    31 x), 21 (C 3.2 x);
-//  - max |dev| above the clean DPO path's: 3 (2.9 x), 12 (1.1 x), 16
-//    (1.8 x), 18 (1.5 x), 19 (2.1 x);
-//  - the tolerance rounds leave grid points beyond the tolerance where the
-//    input held it across the move, so the run goes back as programmed with
-//    the input's deviation: 9 (21 x DPO), 13 (4.2 x), 20 (73 x), 22 (61 x).
+//  - max |dev| above the clean DPO path's: 3 (2.9 x), 9 (3.5 x, with d2A
+//    99 x and d2C 20 x: put back at 21 x DPO until the retries of stop 25),
+//    12 (1.1 x), 16 (1.8 x), 18 (1.5 x), 19 (2.1 x);
+//  - every solve leaves grid points beyond the tolerance where the input
+//    held it across the move, so the run goes back as programmed with the
+//    input's deviation: 13 (4.2 x DPO), 20 (68 x);
+//  - the d2 rule puts the run back, with the input's deviation: 22 (62 x).
 INSTANTIATE_TEST_SUITE_P(DISABLED_FailingUntilTheSolverFixes, HighAccuracyRandomCasesTest,
                          ::testing::Values(1u, 2u, 3u, 4u, 5u, 8u, 9u, 10u, 12u, 13u, 14u, 16u,
                                            18u, 19u, 20u, 21u, 22u));

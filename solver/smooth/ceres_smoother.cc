@@ -235,9 +235,11 @@ constexpr double kToleranceTargetFraction = 0.8;
 // fraction of the move, both ways; and, since the swept envelope cuts a
 // point with whichever pose's cutter reaches it, as a guard (overcut only)
 // at every free pose whose contact ruling lies within the guard distances of
-// it and at the middle of the moves between them: a point gouged from a
-// neighbouring pose was otherwise held only where it was not cut, and
-// stayed beyond at any weight (0.0119 mm at 1000 times, issue 16 seed 46).
+// it and at the middle of the moves between them (or, with
+// held_point_guard_spacing_mm > 0, at points that far apart inside every
+// move with one such pose at an end): a point gouged from a neighbouring pose
+// was otherwise held only where it was not cut, and stayed beyond at any
+// weight (0.0119 mm at 1000 times, issue 16 seed 46).
 void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
                         const std::vector<bool>& free_pose, SmoothingState* state,
                         ceres::Problem* problem) {
@@ -300,11 +302,21 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
             DeviationCost::CreateAtPose(guard, settings, scale), nullptr,
             state->poses[i].data()));
       }
-      if (i + 1 < path.poses.size() && near(i + 1) && !IsPositioningMove(path.poses[i + 1]) &&
-          (free_pose[i] || free_pose[i + 1])) {
+    }
+    const double spacing_mm = o.held_point_guard_spacing_mm;
+    for (size_t i = 0; i + 1 < path.poses.size(); ++i) {
+      const bool guarded = spacing_mm > 0 ? near(i) || near(i + 1) : near(i) && near(i + 1);
+      if (!guarded || IsPositioningMove(path.poses[i + 1]) || !(free_pose[i] || free_pose[i + 1])) {
+        continue;
+      }
+      const double move_mm = state->s_mm[i + 1] - state->s_mm[i];
+      const int per_move =
+          spacing_mm > 0 ? std::clamp(static_cast<int>(std::ceil(move_mm / spacing_mm)) - 1, 1, 15)
+                         : 1;
+      for (int k = 1; k <= per_move; ++k) {
         state->families["tolerance_points"].push_back(problem->AddResidualBlock(
-            DeviationCost::CreateBetweenPoses(guard, settings, scale, 0.5), nullptr,
-            state->poses[i].data(), state->poses[i + 1].data()));
+            DeviationCost::CreateBetweenPoses(guard, settings, scale, k / (per_move + 1.0)),
+            nullptr, state->poses[i].data(), state->poses[i + 1].data()));
       }
     }
   }
@@ -457,6 +469,9 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
           InvalidField("between_min_move_mm", between_min_move_mm, "finite and >= 0"));
   check.Require(ruling_samples >= 2, InvalidField("--ruling_samples", ruling_samples, ">= 2"));
   check.Require(between_samples >= 0, InvalidField("--between_samples", between_samples, ">= 0"));
+  check.Require(finite_at_least(held_point_guard_spacing_mm, 0),
+                InvalidField("held_point_guard_spacing_mm", held_point_guard_spacing_mm,
+                             "finite and >= 0"));
   check.Require(angle_tolerance_deg > 0,
           InvalidField("--angle_tolerance_deg", angle_tolerance_deg, "> 0"));
   check.Require(w_band > 0, InvalidField("w_band", w_band, "> 0"));

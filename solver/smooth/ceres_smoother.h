@@ -70,6 +70,16 @@ struct HighAccuracyOptions {
   // Distances (mm along rail 0) of the guard rulings on each side of a
   // pose's own, which its cutter must not cut into (deviation_cost.h).
   std::vector<double> guard_distances_mm = {0.3, 0.6, 1.2, 2.4};
+  // A point held to the tolerance is a guard at the middle of each move
+  // between two poses within the guard distances of it; with a spacing > 0,
+  // at points at most this far apart (mm of contact arc length) inside
+  // every move with one such pose at an end. The cutter that gouges a point
+  // near a surface's end or across a strong twist does so inside the move
+  // that starts at its ruling, away from both poses (issue 16, seed 36:
+  // 0.0355 mm at any weight). More residuals on long moves, slower rounds:
+  // the pipeline asks for them only after a solve without them broke the
+  // tolerance. >= 0.
+  double held_point_guard_spacing_mm = 0.0;
   // Joint-space points between neighbouring poses checked for deviation
   // (0 = poses only).
   int between_samples = 1;
