@@ -615,6 +615,13 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& spline_path,
       held.inputs.tolerance_points = &held.active;
       options = guarded;
       if (guess_out != nullptr) *guess_out = *retry.start;
+      if (retry.start != &guess) {
+        // The report's start, and what the result is judged against, is
+        // the one the kept solve came from.
+        result->start_placed_on_surface = !start_placed;
+        Status s = run.Evaluate("the other start", *retry.start, &result->initial_guess_metrics);
+        if (!s.ok()) return Status::SolverFailure("the other start: " + s.message());
+      }
     } else {
       *result = before;
     }
