@@ -599,8 +599,9 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& spline_path,
   constexpr double kGuardSpacingMm = 0.4;
   for (const Retry& retry : {Retry{&other_start, 0.0}, Retry{&guess, kGuardSpacingMm},
                              Retry{&other_start, kGuardSpacingMm}}) {
-    if (held.beyond_runs.empty() || job.surface == nullptr) break;
-    if (retry.start->poses.size() != guess.poses.size()) continue;
+    // (Only a solve held to the tolerance, which takes a surface and so
+    // both starts, leaves runs beyond it.)
+    if (held.beyond_runs.empty()) break;
     const SmoothingResult before = *result;
     HeldSolve again;
     again.inputs = held.inputs;
