@@ -71,6 +71,11 @@ DEFINE_bool(judge_on_input_range, true,
             "smooth: judge the output (report and tolerance check) on the grid of the input's "
             "covered u range, so a path that retreats from the surface's ends is charged for "
             "what it leaves; false judges the output on its own covered range.");
+DEFINE_bool(even_stations, true,
+            "smooth --mode=high_accuracy with a surface: solve each cutting stretch's poses at "
+            "equal steps of tip arc length along the input's own motion (same pose count, "
+            "same blocks), so that no long CAM move limits the accuracy; false solves every "
+            "pose at the program's own station.");
 DEFINE_bool(whole_surface, false,
             "Deviation grid over the whole surface (u in [0, 1]) instead of the u range the "
             "input covers; smooth judges its output on the same range as the input.");

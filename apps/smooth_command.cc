@@ -171,6 +171,7 @@ Status RequestFromFlags(SmoothRequest* request) {
   settings.accept_over_tolerance = FLAGS_accept_over_tolerance;
   settings.keep_runs_no_worse = FLAGS_keep_runs_no_worse;
   settings.judge_on_input_range = FLAGS_judge_on_input_range;
+  settings.even_stations = FLAGS_even_stations;
   settings.resample_step_mm = FLAGS_resample_step_mm;
   RETURN_IF_ERROR(FeedScheduleOptionsFromFlags(&settings.feed));
   RETURN_IF_ERROR(MetricOptionsFromFlags(&settings.deviation, &settings.motion));

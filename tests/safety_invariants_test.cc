@@ -131,9 +131,20 @@ TEST(OverhangTest, TipBelowTheFloorKeepsItsOverhangAndFitsTheMachine) {
     ASSERT_TRUE(s.ok()) << s.message();
     const size_t n = cam.poses.size();
     ASSERT_EQ(result.output.poses.size(), n);
-    for (size_t i = 0; i < n; ++i) {
-      // The generator's own contact ruling, u = i / (n - 1).
-      const Eigen::Vector3d floor_w = surface.rail(0).Point(i / (n - 1.0));
+    // Each output pose's contact ruling: the solve places the poses at equal
+    // steps of tip arc length along the input's moves
+    // (solver/smooth/even_stations.h), whose poses the generator placed at
+    // u = j / (n - 1); at fraction f of move j the contact is at
+    // (j + f) / (n - 1) to within the rail's curvature over one move.
+    std::vector<double> s_mm(n, 0.0);
+    for (size_t j = 1; j < n; ++j) {
+      s_mm[j] = s_mm[j - 1] + (cam.poses[j].p_w_tip - cam.poses[j - 1].p_w_tip).norm();
+    }
+    for (size_t i = 0, j = 0; i < n; ++i) {
+      const double station_mm = s_mm[n - 1] * i / (n - 1.0);
+      while (j + 2 < n && s_mm[j + 1] < station_mm) ++j;
+      const double f = (station_mm - s_mm[j]) / (s_mm[j + 1] - s_mm[j]);
+      const Eigen::Vector3d floor_w = surface.rail(0).Point((j + f) / (n - 1.0));
       const ToolPose& out = result.output.poses[i];
       EXPECT_NEAR((floor_w - out.p_w_tip).dot(out.a_w), kOverhangMm, 0.1) << i;
       const double turn_deg =

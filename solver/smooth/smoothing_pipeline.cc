@@ -11,6 +11,7 @@
 
 #include "model/machine/axis_metrics.h"
 #include "model/path/rail_projection.h"
+#include "solver/smooth/even_stations.h"
 #include "solver/smooth/surface_placement.h"
 #include "solver/smooth/tolerance_promise.h"
 #include "solver/smooth/both_ways_round_poles.h"
@@ -418,7 +419,8 @@ Status JudgeInput(SmoothingRun* run) {
 // off as the input (tenths of a millimetre), and the solve from there
 // ends in a local minimum. Sets result->initial_guess_metrics and
 // start_placed_on_surface; `placed` holds the placed poses.
-Status ChooseStart(const SmoothingRun& run, const ToolPath& spline_path, ToolPath* placed) {
+Status ChooseStart(const SmoothingRun& run, const ToolPath& stations, const ToolPath& spline_path,
+                   ToolPath* placed) {
   const SmoothingJob& job = run.job;
   SmoothingResult* result = run.result;
   bool start_placed = false;
@@ -427,7 +429,7 @@ Status ChooseStart(const SmoothingRun& run, const ToolPath& spline_path, ToolPat
     if (!s.ok()) return Status::SolverFailure("spline start: " + s.message());
     run.Stage("placing the poses on the surface");
     PathMetrics placed_metrics;
-    s = PlaceOnSurface(*job.input, *job.surface, *job.cutter, placed);
+    s = PlaceOnSurface(stations, *job.surface, *job.cutter, placed);
     if (s.ok()) s = run.Evaluate("the placed start", *placed, &placed_metrics);
     if (!s.ok()) return Status::SolverFailure("placement: " + s.message());
     if (WorstDeviationMm(placed_metrics) < WorstDeviationMm(result->initial_guess_metrics)) {
@@ -561,21 +563,23 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
 
 // High-accuracy mode after the spline method: the start, the solve held to
 // the tolerance (and stiffer re-solves), then the runs it made worse put
-// back, and what that cannot mend refused. `guess_out`, if not null,
-// receives the solve's starting path.
-Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& spline_path,
-                         ToolPath* guess_out) {
+// back, and what that cannot mend refused. `stations`: the input, or its
+// poses moved to even stations (solver/smooth/even_stations.h), which the
+// solve ties its poses to; `spline_path` is its spline. `guess_out`, if not
+// null, receives the solve's starting path.
+Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& stations,
+                         const ToolPath& spline_path, ToolPath* guess_out) {
   const SmoothingJob& job = run.job;
   const SmoothingSettings& settings = run.settings;
   SmoothingResult* result = run.result;
   ToolPath placed;
-  RETURN_IF_ERROR(ChooseStart(run, spline_path, &placed));
+  RETURN_IF_ERROR(ChooseStart(run, stations, spline_path, &placed));
   const bool start_placed = result->start_placed_on_surface;
   const ToolPath& guess =
-      job.surface == nullptr ? *job.input : start_placed ? placed : spline_path;
+      job.surface == nullptr ? stations : start_placed ? placed : spline_path;
   if (guess_out != nullptr) *guess_out = guess;
   HeldSolve held;
-  held.inputs = {job.input, &guess, job.surface, job.cutter, job.machine};
+  held.inputs = {&stations, &guess, job.surface, job.cutter, job.machine};
   held.held_to_tolerance = job.surface != nullptr && !settings.accept_over_tolerance;
   HighAccuracyOptions options = settings.high_accuracy;
   options.interpolation = settings.deviation.interpolation;
@@ -714,11 +718,23 @@ Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& set
     return Status::Ok();
   }
 
+  // High accuracy with a surface solves at even stations along the input's
+  // motion; the input stays the judge.
+  ToolPath even;
+  const bool even_stations =
+      high_accuracy && job.surface != nullptr && settings.even_stations;
+  if (even_stations) {
+    run.Stage("spacing the stations evenly");
+    Status s = EvenStations(*job.input, *job.surface, *job.machine,
+                            settings.deviation.interpolation, &even);
+    if (!s.ok()) return Status::SolverFailure("even stations: " + s.message());
+  }
+  const ToolPath& stations = even_stations ? even : *job.input;
   const SplineSmootherOptions spline_options =
       high_accuracy ? ForHighAccuracyGuess(settings.spline) : settings.spline;
   ToolPath spline_path;
   run.Stage("spline smoothing");
-  Status s = SmoothWithSplines(*job.input, *job.machine, job.surface, *job.cutter, spline_options,
+  Status s = SmoothWithSplines(stations, *job.machine, job.surface, *job.cutter, spline_options,
                                &spline_path, &result->spline);
   // The input was read and fits the machine: a method that fails on it fails
   // as a solver.
@@ -736,7 +752,7 @@ Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& set
     }
     RETURN_IF_ERROR(run.FinishOutput());
   } else {
-    RETURN_IF_ERROR(SolveHighAccuracy(run, spline_path, guess_out));
+    RETURN_IF_ERROR(SolveHighAccuracy(run, stations, spline_path, guess_out));
   }
   result->output_metrics = result->output_at_input_feed;
   return Status::Ok();

@@ -93,6 +93,11 @@ struct SmoothingSettings {
   // it leaves (issue 16, item 4): a judge never takes its frame from what it
   // judges. Off gives the old judging of each path on its own range.
   bool judge_on_input_range = true;
+  // High accuracy with a surface: solve each cutting stretch's poses at
+  // equal steps of tip arc length along the input's motion
+  // (solver/smooth/even_stations.h) instead of at the CAM's own uneven
+  // stations. Off solves every pose where the program has it.
+  bool even_stations = true;
   bool schedule_feed = true;
   FeedScheduleOptions feed;
   // Also the interpolation model of the high-accuracy cost (its

@@ -1,0 +1,100 @@
+// Even stations (solver/smooth/even_stations.h) against closed forms: a
+// straight flank path along a plane strip whose A turns linearly with the
+// tip's travel, spaced unevenly, comes back at equal steps with A at its
+// linear value there; the stretch's ends, lead poses beyond the surface's
+// ends and the poses around a rapid stay where they are.
+#include "solver/smooth/even_stations.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "model/io/json_io.h"
+#include "tests/test_util.h"
+
+namespace tpopt {
+namespace {
+
+constexpr double kLengthMm = 100.0, kRadiusMm = 4.0;
+// A over the strip, rad per mm of x.
+constexpr double kASlope = 0.002;
+
+// The plane strip x in [0, 100], z in [0, 30] at y = 0; the cutter on +y.
+RuledSurface Strip() {
+  BSplineCurve rail0, rail1;
+  CHECK(BSplineCurve::Create(1, {0, 0, 1, 1}, {{0, 0, 0}, {kLengthMm, 0, 0}}, "rail 0", &rail0)
+            .ok());
+  CHECK(BSplineCurve::Create(1, {0, 0, 1, 1}, {{0, 0, 30}, {kLengthMm, 0, 30}}, "rail 1", &rail1)
+            .ok());
+  return RuledSurface("strip", rail0, rail1, CutterSide::kPositive);
+}
+
+// The pose with its tip at x on the strip's floor line offset by R, and
+// A = kASlope x, C = 0 (a = (0, sin A, cos A)).
+ToolPose PoseAt(double x_mm) {
+  ToolPose pose;
+  pose.p_w_tip = Eigen::Vector3d(x_mm, kRadiusMm, 0);
+  const double a = kASlope * x_mm;
+  pose.a_w = Eigen::Vector3d(0, std::sin(a), std::cos(a));
+  pose.feed_mm_per_min = 1000;
+  return pose;
+}
+
+class EvenStationsTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(
+        ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &machine_).ok());
+  }
+  RuledSurface surface_ = Strip();
+  Machine machine_;
+};
+
+TEST_F(EvenStationsTest, UnevenPosesComeBackAtEqualStepsOnTheInputsMotion) {
+  for (const Interpolation model : {Interpolation::kTcp, Interpolation::kJoint}) {
+    SCOPED_TRACE(InterpolationName(model));
+    ToolPath path;
+    // A lead-in beyond x = 0, then uneven poses with a micrometre pair.
+    for (double x : {-4.0, -2.0, 0.0, 1.0, 5.0, 5.001, 20.0, 50.0, 51.0, 100.0}) {
+      path.poses.push_back(PoseAt(x));
+    }
+    path.poses[0].rapid = true;
+    ToolPath even;
+    ASSERT_TRUE(EvenStations(path, surface_, machine_, model, &even).ok());
+    ASSERT_EQ(even.poses.size(), path.poses.size());
+    // The lead-in (beyond the end) and the stretch's ends keep their place.
+    for (size_t i : {0u, 1u, 2u, 9u}) {
+      EXPECT_EQ(even.poses[i].p_w_tip, path.poses[i].p_w_tip) << i;
+      EXPECT_EQ(even.poses[i].a_w, path.poses[i].a_w) << i;
+    }
+    // Poses 2..9 span x 0..100 in 7 moves: the interior at 100 k / 7. Under
+    // TCP the tip is on the line exactly and A linear in it; the joint
+    // model moves the tip off the line by the rotaries' turn only.
+    const double tip_mm = model == Interpolation::kTcp ? 1e-9 : 0.05;
+    for (size_t k = 1; k < 7; ++k) {
+      const ToolPose expected = PoseAt(kLengthMm * k / 7.0);
+      const ToolPose& got = even.poses[2 + k];
+      EXPECT_NEAR((got.p_w_tip - expected.p_w_tip).norm(), 0, tip_mm) << k;
+      EXPECT_NEAR(std::acos(std::min(1.0, got.a_w.dot(expected.a_w))), 0, 1e-7) << k;
+      EXPECT_EQ(got.feed_mm_per_min, path.poses[2 + k].feed_mm_per_min);
+    }
+  }
+}
+
+TEST_F(EvenStationsTest, ARapidOrAToolChangeEndsAStretch) {
+  ToolPath path;
+  for (double x : {0.0, 2.0, 3.0, 40.0, 41.0, 60.0, 90.0, 100.0}) path.poses.push_back(PoseAt(x));
+  path.poses[3].rapid = true;  // two stretches: 0..2 and 3..7
+  for (size_t i = 5; i < path.poses.size(); ++i) path.poses[i].tool = 1;  // 3..4, 5..7
+  ToolPath even;
+  ASSERT_TRUE(EvenStations(path, surface_, machine_, Interpolation::kTcp, &even).ok());
+  // 0..2: pose 1 at x 1.5; 3..4: nothing inside; 5..7: pose 6 at x 80.
+  const std::vector<double> x = {0, 1.5, 3, 40, 41, 60, 80, 100};
+  for (size_t i = 0; i < x.size(); ++i) {
+    EXPECT_NEAR(even.poses[i].p_w_tip.x(), x[i], 1e-9) << i;
+  }
+}
+
+}  // namespace
+}  // namespace tpopt
