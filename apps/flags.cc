@@ -73,9 +73,9 @@ DEFINE_bool(judge_on_input_range, true,
             "what it leaves; false judges the output on its own covered range.");
 DEFINE_bool(even_stations, true,
             "smooth --mode=high_accuracy with a surface: solve each cutting stretch's poses at "
-            "equal steps of tip arc length along the input's own motion (same pose count, "
-            "same blocks), so that no long CAM move limits the accuracy; false solves every "
-            "pose at the program's own station.");
+            "stations along the input's own motion where every move makes the same error "
+            "(same pose count, same blocks), so that no long CAM move limits the accuracy; "
+            "false solves every pose at the program's own station.");
 DEFINE_bool(whole_surface, false,
             "Deviation grid over the whole surface (u in [0, 1]) instead of the u range the "
             "input covers; smooth judges its output on the same range as the input.");

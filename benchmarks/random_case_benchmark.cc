@@ -7,10 +7,12 @@
 //   ./build/benchmarks/random_case_benchmark [--cases=200] [--first_seed=1]
 //       [--poses=40] [--out=random_cases.csv] [--seeds=3,17,29]
 //       [--mode=spline|high_accuracy] [--interpolation=tcp|joint]
+//       [--even_stations=false]
 //
 // --seeds runs the listed seeds instead of --cases from --first_seed;
 // --mode and --interpolation run only the configurations that match (for
-// diagnosing single cases). With --seeds every refusal also prints the
+// diagnosing single cases); --even_stations=false solves high accuracy at
+// the CAM's own stations (solver/smooth/even_stations.h). With --seeds every refusal also prints the
 // case's description and the input's and initial guess's max |dev|.
 //
 // Deviation is that of the pipeline's own report (the fast exact evaluator
@@ -67,9 +69,10 @@ double Ratio(double value, double reference) {
 }
 
 Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
-            const PathMetrics& spo, bool detail) {
+            const PathMetrics& spo, bool even_stations, bool detail) {
   SmoothingSettings settings;
   settings.mode = config.mode;
+  settings.even_stations = even_stations;
   settings.deviation.interpolation = config.interpolation;
   settings.judge_on_input_range = true;
   SmoothingResult result;
@@ -128,6 +131,7 @@ int Main(int argc, char** argv) {
   unsigned first_seed = 1;
   std::string csv_path, only_mode, only_interpolation;
   std::vector<unsigned> seeds;
+  bool even_stations = true;
   for (int i = 1; i < argc; ++i) {
     const char* arg = argv[i];
     if (std::strncmp(arg, "--cases=", 8) == 0) {
@@ -147,10 +151,13 @@ int Main(int argc, char** argv) {
       only_mode = arg + 7;
     } else if (std::strncmp(arg, "--interpolation=", 16) == 0) {
       only_interpolation = arg + 16;
+    } else if (std::strcmp(arg, "--even_stations=false") == 0) {
+      even_stations = false;
     } else {
       std::fprintf(stderr,
                    "usage: %s [--cases=200] [--first_seed=1] [--poses=40] [--out=FILE.csv] "
-                   "[--seeds=a,b,c] [--mode=spline|high_accuracy] [--interpolation=tcp|joint]\n",
+                   "[--seeds=a,b,c] [--mode=spline|high_accuracy] [--interpolation=tcp|joint] "
+                   "[--even_stations=false]\n",
                    argv[0]);
       return 2;
     }
@@ -230,7 +237,7 @@ int Main(int argc, char** argv) {
     }
     for (const Config& config : configs) {
       rows.push_back(RunCase(c, config, dpo[static_cast<int>(config.interpolation)], spo,
-                             detail));
+                             even_stations, detail));
       if (rows.back().outcome != "ok") {
         std::fprintf(stderr, "\nseed %u %s %s %s: %s\n", c.seed, config.ModeName(),
                      InterpolationName(config.interpolation), rows.back().outcome.c_str(),

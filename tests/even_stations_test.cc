@@ -2,7 +2,10 @@
 // straight flank path along a plane strip whose A turns linearly with the
 // tip's travel, spaced unevenly, comes back at equal steps with A at its
 // linear value there; the stretch's ends, lead poses beyond the surface's
-// ends and the poses around a rapid stay where they are.
+// ends and the poses around a rapid stay where they are (the strip neither
+// curves nor twists, so every move errs alike at equal steps); and on a
+// strip whose ruling turns at a constant rate in its second half only, the
+// steps there are shorter by the square root of twice the error density.
 #include "solver/smooth/even_stations.h"
 
 #include <cmath>
@@ -11,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "model/io/json_io.h"
+#include "tests/analytic_surfaces.h"
 #include "tests/test_util.h"
 
 namespace tpopt {
@@ -94,6 +98,40 @@ TEST_F(EvenStationsTest, ARapidOrAToolChangeEndsAStretch) {
   for (size_t i = 0; i < x.size(); ++i) {
     EXPECT_NEAR(even.poses[i].p_w_tip.x(), x[i], 1e-9) << i;
   }
+}
+
+// The ruling turns about the rail (x) by theta(t) = 0 for t < 1/2 and
+// k (t - 1/2)^2 beyond, so e'' = 0 in the first half and constant, |e''| =
+// 2k / 100^2 per mm^2, in the second. Density M = 30 |e''| / 8 there, 0 before;
+// floored at its mean over the stretch (M / 2 with the poses spread
+// evenly), the weights are sqrt(M / 2) and sqrt(M): steps in the first half
+// sqrt(2) times those in the second.
+TEST_F(EvenStationsTest, StepsShortenWhereTheRulingTurns) {
+  constexpr double k = 0.8;  // rad over the half: 0.2 rad end to end
+  const RuledSurface turning = testing::RuledThrough(
+      "turning", 40, CutterSide::kPositive, [&](double t) {
+        const double theta = t < 0.5 ? 0.0 : k * (t - 0.5) * (t - 0.5);
+        return testing::Ruling{Eigen::Vector3d(kLengthMm * t, 0, 0),
+                               Eigen::Vector3d(0, -std::sin(theta), std::cos(theta)), 30.0};
+      });
+  ToolPath path;
+  constexpr int kPoses = 101;
+  for (int i = 0; i < kPoses; ++i) path.poses.push_back(PoseAt(kLengthMm * i / (kPoses - 1)));
+  ToolPath even;
+  ASSERT_TRUE(EvenStations(path, turning, machine_, Interpolation::kTcp, &even).ok());
+  // Mean step over x in [10, 40] and in [60, 90], away from the blend at 50.
+  const auto mean_step = [&](double from, double to) {
+    double sum = 0;
+    int count = 0;
+    for (int i = 1; i < kPoses; ++i) {
+      const double x = even.poses[i].p_w_tip.x();
+      if (x < from || x > to) continue;
+      sum += x - even.poses[i - 1].p_w_tip.x();
+      ++count;
+    }
+    return sum / count;
+  };
+  EXPECT_NEAR(mean_step(10, 40) / mean_step(60, 90), std::sqrt(2.0), 0.1);
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 
 #include "model/io/json_io.h"
 #include "model/path/path_generator.h"
+#include "model/path/rail_projection.h"
+#include "solver/smooth/even_stations.h"
 #include "solver/smooth/smoothing_pipeline.h"
 #include "tests/test_util.h"
 
@@ -125,37 +127,41 @@ TEST(OverhangTest, TipBelowTheFloorKeepsItsOverhangAndFitsTheMachine) {
     ASSERT_TRUE(GenerateFlankPath(surface, g, &cam).ok());
     constexpr double kOverhangMm = 2.0;
     for (ToolPose& p : cam.poses) p.p_w_tip -= kOverhangMm * p.a_w;
-    SmoothingSettings settings;
-    SmoothingResult result;
-    const Status s = RunSmoothing({&cam, &surface, &*cam.cutter, &sim}, settings, &result);
-    ASSERT_TRUE(s.ok()) << s.message();
-    const size_t n = cam.poses.size();
-    ASSERT_EQ(result.output.poses.size(), n);
-    // Each output pose's contact ruling: the solve places the poses at equal
-    // steps of tip arc length along the input's moves
-    // (solver/smooth/even_stations.h), whose poses the generator placed at
-    // u = j / (n - 1); at fraction f of move j the contact is at
-    // (j + f) / (n - 1) to within the rail's curvature over one move.
-    std::vector<double> s_mm(n, 0.0);
-    for (size_t j = 1; j < n; ++j) {
-      s_mm[j] = s_mm[j - 1] + (cam.poses[j].p_w_tip - cam.poses[j - 1].p_w_tip).norm();
+    // At the program's own stations each pose's contact is the generator's
+    // u = i / (n - 1); at even stations (the default), the contact of the
+    // station the solve ties it to (solver/smooth/even_stations.h, tested
+    // against closed forms in even_stations_test).
+    for (const bool even : {false, true}) {
+      SCOPED_TRACE(even ? "even stations" : "the program's stations");
+      SmoothingSettings settings;
+      settings.even_stations = even;
+      SmoothingResult result;
+      const Status s = RunSmoothing({&cam, &surface, &*cam.cutter, &sim}, settings, &result);
+      ASSERT_TRUE(s.ok()) << s.message();
+      const size_t n = cam.poses.size();
+      ASSERT_EQ(result.output.poses.size(), n);
+      std::vector<double> u(n);
+      for (size_t i = 0; i < n; ++i) u[i] = i / (n - 1.0);
+      if (even) {
+        ToolPath stations;
+        ASSERT_TRUE(EvenStations(cam, surface, sim, settings.deviation.interpolation, &stations)
+                        .ok());
+        u = ProjectPathOntoRail(surface.rail(0), stations);
+      }
+      for (size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3d floor_w = surface.rail(0).Point(u[i]);
+        const ToolPose& out = result.output.poses[i];
+        EXPECT_NEAR((floor_w - out.p_w_tip).dot(out.a_w), kOverhangMm, 0.1) << i;
+        const double turn_deg =
+            std::acos(std::min(1.0, out.a_w.dot(cam.poses[i].a_w))) * 180 / M_PI;
+        EXPECT_LE(turn_deg, HighAccuracyOptions().axis_cone_deg) << i;
+      }
+      PathMetrics dpo_metrics;
+      ASSERT_TRUE(EvaluatePath(dpo, sim, &surface, *dpo.cutter, settings.deviation,
+                               settings.motion, &dpo_metrics)
+                      .ok());
+      EXPECT_LE(WorstDeviationMm(result.output_metrics), WorstDeviationMm(dpo_metrics));
     }
-    for (size_t i = 0, j = 0; i < n; ++i) {
-      const double station_mm = s_mm[n - 1] * i / (n - 1.0);
-      while (j + 2 < n && s_mm[j + 1] < station_mm) ++j;
-      const double f = (station_mm - s_mm[j]) / (s_mm[j + 1] - s_mm[j]);
-      const Eigen::Vector3d floor_w = surface.rail(0).Point((j + f) / (n - 1.0));
-      const ToolPose& out = result.output.poses[i];
-      EXPECT_NEAR((floor_w - out.p_w_tip).dot(out.a_w), kOverhangMm, 0.1) << i;
-      const double turn_deg =
-          std::acos(std::min(1.0, out.a_w.dot(cam.poses[i].a_w))) * 180 / M_PI;
-      EXPECT_LE(turn_deg, HighAccuracyOptions().axis_cone_deg) << i;
-    }
-    PathMetrics dpo_metrics;
-    ASSERT_TRUE(EvaluatePath(dpo, sim, &surface, *dpo.cutter, settings.deviation,
-                             settings.motion, &dpo_metrics)
-                    .ok());
-    EXPECT_LE(WorstDeviationMm(result.output_metrics), WorstDeviationMm(dpo_metrics));
   }
 }
 

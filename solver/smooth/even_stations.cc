@@ -1,5 +1,7 @@
 #include "solver/smooth/even_stations.h"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "model/path/rail_projection.h"
@@ -7,23 +9,54 @@
 namespace tpopt {
 namespace {
 
-// Places poses first+1 .. last-1 of `out` at equal tip arc length along the
-// moves of `path` between poses first and last.
+// The error of the controller's straight move of length h through the
+// contact at u, per h^2 (mm/mm^2): the tip's chord sags from the rail by
+// h^2 kappa / 8 and the interpolated axis turns off the ruling by
+// h^2 |e''| / 8, which the ruling's length L carries to its far end; e is the
+// unit ruling direction, '' the second derivative over rail 0's arc length
+// (central differences over `du`).
+double MoveErrorDensity(const RuledSurface& surface, double u) {
+  constexpr double du = 1e-3;
+  const double u0 = std::clamp(u, du, 1.0 - du);
+  const auto ruling = [&](double t) {
+    return Eigen::Vector3d(surface.rail(1).Point(t) - surface.rail(0).Point(t));
+  };
+  const Eigen::Vector3d e0 = ruling(u0 - du).normalized(), e1 = ruling(u0).normalized(),
+                        e2 = ruling(u0 + du).normalized();
+  const double h0 = (surface.rail(0).Point(u0) - surface.rail(0).Point(u0 - du)).norm();
+  const double h1 = (surface.rail(0).Point(u0 + du) - surface.rail(0).Point(u0)).norm();
+  if (!(h0 > 0 && h1 > 0)) return 0.0;
+  const double e_ss = ((e2 - e1) / h1 - (e1 - e0) / h0).norm() * 2 / (h0 + h1);
+  const double radius_mm = surface.rail(0).CurvatureRadius(u0);
+  const double kappa = std::isfinite(radius_mm) && radius_mm > 0 ? 1 / radius_mm : 0.0;
+  return (ruling(u0).norm() * e_ss + kappa) / 8;
+}
+
+// Places poses first+1 .. last-1 of `out` along the moves of `path` between
+// poses first and last so that every move makes the same error: at equal
+// steps of the integral of sqrt(density) over tip arc length, the density
+// (MoveErrorDensity at each pose's contact u) floored at its mean over the
+// stretch, so that a nearly flat stretch is spaced evenly in arc length and
+// poses gather only where the error concentrates (on 200 random cases the
+// floor at the mean held 166 within the clean DPO path's max |dev|, at a
+// tenth of it 166, without the density 162).
 void SpaceStretch(const ToolPath& path, const std::vector<JointVector>& joints,
-                  const KinematicParams& kinematics, Interpolation interpolation, size_t first,
-                  size_t last, ToolPath* out) {
-  std::vector<double> s_mm(last - first + 1, 0.0);
+                  const std::vector<double>& density, const KinematicParams& kinematics,
+                  Interpolation interpolation, size_t first, size_t last, ToolPath* out) {
+  double mean = 0.0;
+  for (size_t i = first; i <= last; ++i) mean += density[i] / (last - first + 1);
+  const auto weight = [&](size_t i) { return std::sqrt(std::max(density[i], 1.0 * mean) + 1e-300); };
+  std::vector<double> phi(last - first + 1, 0.0);
   for (size_t i = first + 1; i <= last; ++i) {
-    s_mm[i - first] =
-        s_mm[i - 1 - first] + (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
+    const double move_mm = (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
+    phi[i - first] = phi[i - 1 - first] + 0.5 * (weight(i - 1) + weight(i)) * move_mm;
   }
-  const double length_mm = s_mm.back();
   size_t move = first;  // the move move -> move + 1 holds the station
   for (size_t k = first + 1; k < last; ++k) {
-    const double station_mm = length_mm * static_cast<double>(k - first) / (last - first);
-    while (move + 1 < last && s_mm[move + 1 - first] < station_mm) ++move;
-    const double move_mm = s_mm[move + 1 - first] - s_mm[move - first];
-    const double lambda = move_mm > 0 ? (station_mm - s_mm[move - first]) / move_mm : 0.0;
+    const double station = phi.back() * static_cast<double>(k - first) / (last - first);
+    while (move + 1 < last && phi[move + 1 - first] < station) ++move;
+    const double span = phi[move + 1 - first] - phi[move - first];
+    const double lambda = span > 0 ? (station - phi[move - first]) / span : 0.0;
     InterpolateMove<double>(kinematics, interpolation, joints[move], joints[move + 1],
                             path.poses[move].p_w_tip, path.poses[move + 1].p_w_tip, lambda,
                             &out->poses[k].p_w_tip, &out->poses[k].a_w);
@@ -42,6 +75,8 @@ Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Mac
   const std::vector<bool> beyond = PosesBeyondRailEnds(surface.rail(0), path, u);
   *out = path;
   const size_t n = path.poses.size();
+  std::vector<double> density(n, 0.0);
+  for (size_t i = 0; i < n; ++i) density[i] = MoveErrorDensity(surface, u[i]);
   // The move into pose i continues the stretch that pose i - 1 is in.
   const auto continues = [&](size_t i) {
     const ToolPose& pose = path.poses[i];
@@ -52,7 +87,7 @@ Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Mac
     size_t last = first;
     while (last + 1 < n && continues(last + 1)) ++last;
     if (last >= first + 2) {
-      SpaceStretch(path, joints, machine.kinematics, interpolation, first, last, out);
+      SpaceStretch(path, joints, density, machine.kinematics, interpolation, first, last, out);
     }
     first = last + 1;
   }

@@ -11,9 +11,13 @@
 // its uniform spacing, on 21; peak d2A/ds2 and d2C/ds2 within 2 x the clean
 // SPO path's on 20). So before the solve, the interior poses of every
 // cutting stretch are moved along the input's own motion (the controller's
-// interpolation between its poses) to equal steps of tip arc length; the
-// stretch's first and last poses stay where they are, and so does the
-// pose count and every block's place in the program.
+// interpolation between its poses) so that every move makes the same error:
+// a move of length h through contact u errs by about h^2 M(u), M from the
+// rail's curvature and the turn of the ruling along it, so the steps go as
+// 1 / sqrt(M), M floored at its mean over the stretch (where the surface is
+// nearly flat, the steps are even in arc length). The stretch's first and
+// last poses stay where they are, and so does the pose count and every
+// block's place in the program.
 //
 // A stretch is a maximal run of cutting moves (no rapid, link or held
 // move: model/path/tool_path.h) of one tool between poses on the surface:
@@ -30,9 +34,9 @@
 
 namespace tpopt {
 
-// `path` with the interior poses of each cutting stretch at equal steps of
-// tip arc length along its motion under `interpolation` on `machine`; only
-// their tips and axes change. Fails only where `path`'s joints cannot be
+// `path` with the interior poses of each cutting stretch at the stations
+// above along its motion under `interpolation` on `machine`; only their tips
+// and axes (and the programmed joints they no longer have) change. Fails only where `path`'s joints cannot be
 // assigned (it must fit `machine`).
 Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Machine& machine,
                     Interpolation interpolation, ToolPath* out);

@@ -94,9 +94,10 @@ struct SmoothingSettings {
   // judges. Off gives the old judging of each path on its own range.
   bool judge_on_input_range = true;
   // High accuracy with a surface: solve each cutting stretch's poses at
-  // equal steps of tip arc length along the input's motion
+  // stations along the input's motion where every move errs alike
   // (solver/smooth/even_stations.h) instead of at the CAM's own uneven
-  // stations. Off solves every pose where the program has it.
+  // stations. Off solves every pose where the program has it. A solve
+  // refused at even stations is solved again at the program's own.
   bool even_stations = true;
   bool schedule_feed = true;
   FeedScheduleOptions feed;
@@ -118,6 +119,10 @@ struct SmoothingResult {
   // on the surface (solver/smooth/surface_placement.h), which the judge found
   // nearer the surface than the spline path; false: from the spline path.
   bool start_placed_on_surface = false;
+  // High accuracy: the solve's poses were at even stations along the input
+  // (solver/smooth/even_stations.h); false: at the program's own, by
+  // --even_stations=false, without a surface, or after a refusal there.
+  bool even_stations = false;
   PathMetrics output_at_input_feed;   // before feed scheduling
   PathMetrics output_metrics;         // as written
   // High accuracy: the tolerance unit of the solve, mm.
