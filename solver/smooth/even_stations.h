@@ -7,11 +7,10 @@
 // grows with the square of the move's length. Solved at the program's own
 // stations, a path is only as exact as its longest move, and the solver
 // buys back the longest moves' error by bending the axes pose to pose
-// (issue 16: on 60 random cases, max |dev| above the clean DPO path's, at
-// its uniform spacing, on 21; peak d2A/ds2 and d2C/ds2 within 2 x the clean
-// SPO path's on 20). So before the solve, the interior poses of every
-// cutting stretch are moved along the input's own motion (the controller's
-// interpolation between its poses) so that every move makes the same error:
+// (issue 16; README, "Random cases", stop 26). So before the solve, the
+// interior poses of every cutting stretch are moved along the input's own
+// motion (the controller's interpolation between its poses) so that every
+// move makes the same error:
 // a move of length h through contact u errs by about h^2 M(u), M from the
 // rail's curvature and the turn of the ruling along it, so the steps go as
 // 1 / sqrt(M), M floored at its mean over the stretch (where the surface is
