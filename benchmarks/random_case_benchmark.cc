@@ -12,8 +12,9 @@
 // --seeds runs the listed seeds instead of --cases from --first_seed;
 // --mode and --interpolation run only the configurations that match (for
 // diagnosing single cases); --even_stations=false solves high accuracy at
-// the CAM's own stations (solver/smooth/even_stations.h). With --seeds every refusal also prints the
-// case's description and the input's and initial guess's max |dev|.
+// the CAM's own stations (solver/smooth/even_stations.h). With --seeds every
+// refusal also prints the case's description and the input's and initial
+// guess's max |dev|.
 //
 // Deviation is that of the pipeline's own report (the fast exact evaluator
 // on the input's covered range, under the configuration's interpolation

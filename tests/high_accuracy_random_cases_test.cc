@@ -228,6 +228,27 @@ TEST(HighAccuracyRandomCasesPutBackTest, APointGougedFromANeighbouringPoseIsHeld
   EXPECT_LT(WorstMm(out), 0.5 * WorstMm(in));
 }
 
+// Seed 120 under joint interpolation: the solve at even stations moved a
+// pose out of the travel (Z -175 mm against [-120, 120]) and was refused;
+// it is solved again at the program's own stations, which the input fits,
+// so the case succeeds inside the travel.
+TEST(HighAccuracyRandomCasesTest, ASolveRefusedAtEvenStationsIsSolvedAtTheProgramsOwn) {
+  RandomCase c;
+  ASSERT_TRUE(MakeCase(120, &c));
+  ASSERT_TRUE(c.fits_machine) << c.description;
+  SmoothingSettings settings;
+  settings.mode = SmoothingMode::kHighAccuracy;
+  settings.deviation.interpolation = Interpolation::kJoint;
+  settings.judge_on_input_range = true;
+  SmoothingResult result;
+  const Status s = testing::SmoothRandomCase(c, settings, &result);
+  ASSERT_TRUE(s.ok()) << s.message();
+  EXPECT_FALSE(result.even_stations);
+  std::vector<JointVector> joints;
+  ASSERT_TRUE(c.machine.AssignJoints(result.output, &joints).ok());
+  EXPECT_TRUE(c.machine.CheckTravel(result.output, joints).ok());
+}
+
 // Seed 14 writes three pairs of poses 1 micrometre apart. Each second pose
 // of a pair is placed on the solved move across it (the controller's TCP
 // move between its neighbours), not solved on its own, where its last-digit

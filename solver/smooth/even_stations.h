@@ -10,8 +10,8 @@
 // (issue 16; README, "Random cases", stop 26). So before the solve, the
 // interior poses of every cutting stretch are moved along the input's own
 // motion (the controller's interpolation between its poses) so that every
-// move makes the same error:
-// a move of length h through contact u errs by about h^2 M(u), M from the
+// move makes the same error: a move of length h through contact u errs by
+// about h^2 M(u), M from the
 // rail's curvature and the turn of the ruling along it, so the steps go as
 // 1 / sqrt(M), M floored at its mean over the stretch (where the surface is
 // nearly flat, the steps are even in arc length). The stretch's first and
@@ -35,8 +35,8 @@ namespace tpopt {
 
 // `path` with the interior poses of each cutting stretch at the stations
 // above along its motion under `interpolation` on `machine`; only their tips
-// and axes (and the programmed joints they no longer have) change. Fails only where `path`'s joints cannot be
-// assigned (it must fit `machine`).
+// and axes (and the programmed joints they no longer have) change. Fails
+// only where `path`'s joints cannot be assigned (it must fit `machine`).
 Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Machine& machine,
                     Interpolation interpolation, ToolPath* out);
 

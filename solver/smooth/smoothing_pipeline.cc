@@ -722,7 +722,7 @@ Status SmoothAtStations(const SmoothingJob& job, const SmoothingSettings& settin
   const bool even_stations =
       high_accuracy && job.surface != nullptr && settings.even_stations;
   if (even_stations) {
-    run.Stage("spacing the stations evenly");
+    run.Stage("placing the stations by their moves' error");
     Status s = EvenStations(*job.input, *job.surface, *job.machine,
                             settings.deviation.interpolation, &even);
     if (!s.ok()) return Status::SolverFailure("even stations: " + s.message());
