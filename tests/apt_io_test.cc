@@ -134,6 +134,14 @@ TEST(AptIoTest, BadInputNamesLineAndValue) {
   const std::string inch = ErrorOf("UNITS/INCHES\nGOTO/0,0,0\nGOTO/100000,0,0\n");
   EXPECT_EQ(inch.find("p.cls:3: a move to (2.54e+06"), 0u) << inch;
   EXPECT_NE(inch.find("mm is out of range (|v| <= 1e6 mm)"), std::string::npos) << inch;
+  // So with a feed and a tool: tpopt writes them in mm, and must read them back.
+  EXPECT_NE(ErrorOf("UNITS/INCHES\nFEDRAT/102221\nGOTO/0,0,0\n")
+                .find("p.cls:3: the feed 2596413.4"),
+            std::string::npos);
+  EXPECT_NE(ErrorOf("UNITS/INCHES\nTLDATA/MILL,40000,0,10\nGOTO/0,0,0\n")
+                .find("p.cls:2: the tool's diameter 1016000.0"),
+            std::string::npos);
+  EXPECT_EQ(ErrorOf("UNITS/INCHES\nFEDRAT/39000\nTLDATA/MILL,39000,0,39000\nGOTO/0,0,0\n"), "");
 }
 
 TEST(AptIoTest, ContinuationSkipsBlankAndCommentLines) {

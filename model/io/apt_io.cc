@@ -166,13 +166,26 @@ class AptReader {
     }
     RETURN_IF_ERROR(FinishCurve());
     if (path_->poses.empty()) return Status::Error(name_ + ": no GOTO: the path is empty");
-    // Inch coordinates within range may not be, in mm; nor the points of an
-    // arc or curve.
+    // Inch values within range may not be, in mm (the unit tpopt writes);
+    // nor the points of an arc or curve.
     for (const ToolPose& p : path_->poses) {
       if (!(p.p_w_tip.cwiseAbs().maxCoeff() <= kMaxMagnitude)) {
         std::ostringstream err;
         err << "a move to (" << p.p_w_tip.transpose() << ") mm is out of range (|v| <= 1e6 mm)";
         return Error(p.source_line, err.str());
+      }
+      if (!(p.feed_mm_per_min <= kMaxMagnitude)) {
+        return Error(p.source_line, "the feed " + std::to_string(p.feed_mm_per_min) +
+                                        " mm/min is out of range (<= 1e6 mm/min)");
+      }
+    }
+    for (const ToolRecord& t : path_->tools) {
+      if (t.cutter && !(2 * t.cutter->radius_mm <= kMaxMagnitude &&
+                        t.cutter->flute_length_mm <= kMaxMagnitude)) {
+        return Error(t.source_line, "the tool's diameter " +
+                                        std::to_string(2 * t.cutter->radius_mm) + " mm or length " +
+                                        std::to_string(t.cutter->flute_length_mm) +
+                                        " mm is out of range (<= 1e6 mm)");
       }
     }
     if (!path_->tools.empty()) {
