@@ -96,6 +96,11 @@ DEFINE_double(w_deviation, 1.0, "high_accuracy: weight of the swept-cutter devia
 DEFINE_double(w_second, 300,
               "high_accuracy: weight of d2(A,C)/ds2, mm^4/rad^2 (solver/smooth/cost/smoothness_cost.h).");
 DEFINE_double(w_third, 3000, "high_accuracy: weight of d3(A,C)/ds3, mm^6/rad^2.");
+DEFINE_double(ruling_departure_factor, 100,
+              "high_accuracy with a surface: where the rulings give the axis its angles, "
+              "d2 and d3 are of A's and C's departure from them, at this many times "
+              "w_second and w_third (0: of the angles themselves; "
+              "solver/smooth/ruling_angles.h).");
 DEFINE_double(w_tip_second, 1e-2, "high_accuracy: weight of the tip's d2p/ds2, mm^2.");
 DEFINE_double(w_tip_third, 0.0, "high_accuracy: weight of the tip's d3p/ds3, mm^4.");
 DEFINE_double(w_limits, 0.0, "high_accuracy: weight of axis velocity/acceleration/jerk excess.");

@@ -60,6 +60,7 @@ DECLARE_double(overcut_factor);
 DECLARE_double(w_deviation);
 DECLARE_double(w_second);
 DECLARE_double(w_third);
+DECLARE_double(ruling_departure_factor);
 DECLARE_double(w_tip_second);
 DECLARE_double(w_tip_third);
 DECLARE_double(w_limits);

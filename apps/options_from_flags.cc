@@ -72,6 +72,7 @@ Status SmootherOptionsFromFlags(bool surface_free, SplineSmootherOptions* spline
   ha->w_deviation = FLAGS_w_deviation;
   ha->w_second = FLAGS_w_second;
   ha->w_third = FLAGS_w_third;
+  ha->ruling_departure_factor = FLAGS_ruling_departure_factor;
   ha->w_tip_second = FLAGS_w_tip_second;
   ha->w_tip_third = FLAGS_w_tip_third;
   ha->w_limits = FLAGS_w_limits;

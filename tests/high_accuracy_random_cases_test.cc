@@ -76,12 +76,15 @@ bool MakeCase(unsigned seed, RandomCase* c) {
 }
 
 // High accuracy as the targets judge it: TCP motion, the input's
-// covered range; `even_stations` off solves at the CAM's own stations (the
-// mechanisms some tests below need a case of, which even stations avoid).
-Status Smooth(const RandomCase& c, SmoothingResult* result, bool even_stations = true) {
+// covered range; `even_stations` off solves at the CAM's own stations, and
+// `ruling_departure_factor` 0 differentiates the angles themselves (the
+// mechanisms some tests below need a case of, which the defaults avoid).
+Status Smooth(const RandomCase& c, SmoothingResult* result, bool even_stations = true,
+              double ruling_departure_factor = HighAccuracyOptions().ruling_departure_factor) {
   SmoothingSettings settings;
   settings.mode = SmoothingMode::kHighAccuracy;
   settings.even_stations = even_stations;
+  settings.high_accuracy.ruling_departure_factor = ruling_departure_factor;
   settings.deviation.interpolation = Interpolation::kTcp;
   settings.judge_on_input_range = true;
   return testing::SmoothRandomCase(c, settings, result);
@@ -90,10 +93,11 @@ Status Smooth(const RandomCase& c, SmoothingResult* result, bool even_stations =
 // The case of `seed`, which must fit its machine, smoothed; a fatal
 // failure if either step fails.
 void MakeAndSmooth(unsigned seed, RandomCase* c, SmoothingResult* result,
-                   bool even_stations = true) {
+                   bool even_stations = true,
+                   double ruling_departure_factor = HighAccuracyOptions().ruling_departure_factor) {
   ASSERT_TRUE(MakeCase(seed, c));
   ASSERT_TRUE(c->fits_machine) << c->description;
-  const Status s = Smooth(*c, result, even_stations);
+  const Status s = Smooth(*c, result, even_stations, ruling_departure_factor);
   ASSERT_TRUE(s.ok()) << s.message() << "\n" << c->description;
 }
 
@@ -183,12 +187,15 @@ TEST(HighAccuracyRandomCasesPutBackTest, RunsGoBackWhereTheToleranceRoundsLeaveP
 // then with the held points guarded inside the moves near them) it keeps
 // the promise, so the solve is kept: the brute-force judge finds it within
 // the clean DPO path's max |dev| and its peaks d2 within 2 x the clean SPO
-// path's. At the CAM's own stations: at even stations the first solve keeps
-// the promise.
+// path's. At the CAM's own stations, and with the angles themselves
+// differentiated: at even stations the first solve keeps the promise, and
+// differentiating the departure from the rulings, d2C/ds2 comes out at
+// 3.6 x SPO at the CAM's stations (0.56 x at even stations).
 TEST(HighAccuracyRandomCasesPutBackTest, ASolveLeftBeyondTheToleranceIsTriedAgainBeforeItGoesBack) {
   RandomCase c;
   SmoothingResult result;
-  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(57, &c, &result, /*even_stations=*/false));
+  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(57, &c, &result, /*even_stations=*/false,
+                                        /*ruling_departure_factor=*/0));
   EXPECT_EQ(result.runs_kept_as_input, 0);
   double u_min = 0, u_max = 0;
   ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
@@ -231,13 +238,16 @@ TEST(HighAccuracyRandomCasesPutBackTest, APointGougedFromANeighbouringPoseIsHeld
 // Seed 120 under joint interpolation: the solve at even stations moved a
 // pose out of the travel (Z -175 mm against [-120, 120]) and was refused;
 // it is solved again at the program's own stations, which the input fits,
-// so the case succeeds inside the travel.
+// so the case succeeds inside the travel. (With the angles themselves
+// differentiated: differentiating their departure from the rulings, the
+// solve at even stations keeps inside the travel.)
 TEST(HighAccuracyRandomCasesTest, ASolveRefusedAtEvenStationsIsSolvedAtTheProgramsOwn) {
   RandomCase c;
   ASSERT_TRUE(MakeCase(120, &c));
   ASSERT_TRUE(c.fits_machine) << c.description;
   SmoothingSettings settings;
   settings.mode = SmoothingMode::kHighAccuracy;
+  settings.high_accuracy.ruling_departure_factor = 0;
   settings.deviation.interpolation = Interpolation::kJoint;
   settings.judge_on_input_range = true;
   SmoothingResult result;
@@ -335,23 +345,22 @@ INSTANTIATE_TEST_SUITE_P(Passing, HighAccuracyRandomCasesTest,
                          ::testing::Values(2u, 4u, 5u, 6u, 7u, 10u, 11u, 13u, 14u, 15u, 17u, 23u,
                                            24u));
 
-// Seeds that still fail (stop 26, at even stations); run them with
-// --gtest_also_run_disabled_tests. What fails, measured, as multiples of the
-// clean SPO path's peak d2 (the target: 2) and of the clean DPO path's max
-// |dev| (the target: 1):
-//  - 1: d2A 25, d2C 2.5;
+// Seeds that still fail (stop 27, at even stations, the departure from the
+// rulings differentiated); run them with --gtest_also_run_disabled_tests.
+// What fails, measured, as multiples of the clean SPO path's peak d2 (the
+// target: 2) and of the clean DPO path's max |dev| (the target: 1), with
+// stop 26's figures where they changed:
+//  - 1: d2A 25, d2C 2.5 (its end near the pole, where the rulings give no
+//    reference);
 //  - 3: max |dev| 2.9 (as at the CAM's stations);
-//  - 8: d2A 15, d2C 2.4 (it held with stations at equal arc length, before
-//    the error-equidistributing spacing, which holds more of the 200
-//    benchmark cases);
-//  - 9: d2A 5.8 (at the CAM's stations: 3.5 x DPO, d2A 99, d2C 20);
-//  - 12: max |dev| 1.15, d2A 9.0;
-//  - 16: max |dev| 1.64; 18: max |dev| 1.53, d2A 3.3;
-//  - 19: max |dev| 1.55, d2A 9.6, d2C 4.0;
-//  - 20: d2A 91, d2C 2.3 (at the CAM's stations: put back at 68 x DPO);
+//  - 8: d2A 15, d2C 2.4, at its lead-out;
+//  - 9: d2A 5.8;
+//  - 12: max |dev| 1.13, d2A 2.9 (was 9.0);
+//  - 16: max |dev| 1.8 (was 1.64); 18: max |dev| 1.55 (d2A was 3.3);
+//  - 19: max |dev| 1.52 (d2A was 9.6, d2C 4.0);
+//  - 20: d2A 89, d2C 2.9, at its lead-in;
 //  - 21: d2C 2.9;
-//  - 22: max |dev| 1.07, d2A 9.8, d2C 12.9 (at the CAM's stations: put back
-//    at 62 x DPO).
+//  - 22: max |dev| 1.07, d2A 3.4 (was 9.8), d2C 12.9.
 INSTANTIATE_TEST_SUITE_P(DISABLED_FailingUntilTheSolverFixes, HighAccuracyRandomCasesTest,
                          ::testing::Values(1u, 3u, 8u, 9u, 12u, 16u, 18u, 19u, 20u, 21u, 22u));
 

@@ -41,6 +41,29 @@ TEST(SmoothnessCostTest, ThirdDerivativeOfACubicIsExact) {
   EXPECT_NEAR(r[kPoseA], 0.0, 1e-12);
 }
 
+TEST(SmoothnessCostTest, DifferentiatesTheDepartureFromAReference) {
+  // Angles = reference + a quadratic departure: only the departure's d2
+  // remains (A: 0.01 s^2 -> 0.02; C: its cubic reference cancels exactly),
+  // and the tip is untouched.
+  const std::array<double, 3> s = {0.0, 0.7, 2.0};
+  std::array<std::array<double, 5>, 3> p;
+  SmoothnessCost<2>::Reference reference;
+  for (int j = 0; j < 3; ++j) {
+    reference[j] = {0.3 * s[j] * s[j] + 1.0, 0.002 * s[j] * s[j] * s[j]};
+    p[j] = PoseAt(s[j]);
+    p[j][kPoseA] += reference[j][0];
+  }
+  const double length = 10.0, h = 1.0;
+  std::unique_ptr<ceres::CostFunction> cost(
+      SmoothnessCost<2>::Create(s, length, length / h, length / h, reference));
+  double r[5];
+  const double* params[] = {p[0].data(), p[1].data(), p[2].data()};
+  ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[kPoseA], 0.02, 1e-12);
+  EXPECT_NEAR(r[kPoseC], 0.0, 1e-12);
+  EXPECT_NEAR(r[kPoseTip], 6.0, 1e-12);
+}
+
 TEST(SmoothnessCostTest, JacobiansMatchNumericDifferences) {
   std::array<std::array<double, 5>, 4> p = {PoseAt(0.1), PoseAt(1.0), PoseAt(2.2), PoseAt(3.0)};
   testing::ExpectJacobiansMatchNumeric(

@@ -16,6 +16,7 @@
 #include "model/path/rail_projection.h"
 #include "model/path/standing_moves.h"
 #include "solver/smooth/coarse_to_fine.h"
+#include "solver/smooth/ruling_angles.h"
 #include "solver/smooth/cost/axis_limit_cost.h"
 #include "solver/smooth/cost/deviation_cost.h"
 #include "solver/spline/overhang.h"
@@ -450,7 +451,8 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
       {"--w_deviation", w_deviation},   {"--w_second", w_second},
       {"--w_third", w_third},           {"--w_tip_second", w_tip_second},
       {"--w_tip_third", w_tip_third},   {"--w_limits", w_limits},
-      {"--w_tip_height", w_tip_height}, {"--w_walls", w_walls}};
+      {"--w_tip_height", w_tip_height}, {"--w_walls", w_walls},
+      {"--ruling_departure_factor", ruling_departure_factor}};
   for (const auto& [flag, w] : weights) {
     check.Require(finite_at_least(w, 0), InvalidField(flag, w, "finite and >= 0"));
   }
@@ -605,21 +607,52 @@ Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& 
 }
 
 // The second and third derivatives of the joints and the tip along s.
+// The ruling angles (solver/smooth/ruling_angles.h) of the poses
+// first..first+kCount-1, false when one of them has none.
+template <int kCount>
+bool RulingWindow(const std::vector<std::optional<Eigen::Vector2d>>& angles, size_t first,
+                  std::array<std::array<double, 2>, kCount>* out) {
+  for (int j = 0; j < kCount; ++j) {
+    if (!angles[first + j]) return false;
+    (*out)[j] = {(*angles[first + j])[0], (*angles[first + j])[1]};
+  }
+  return true;
+}
+
 void AddSmoothnessFamilies(const SmoothingInputs& in, const HighAccuracyOptions& o,
                            double length_mm, const std::vector<bool>& free_pose,
                            SmoothingState* state, ceres::Problem* problem) {
   const ToolPath& path = *in.input;
+  const double factor = o.ruling_departure_factor;
+  std::vector<std::optional<Eigen::Vector2d>> ruling(path.poses.size());
+  if (in.surface != nullptr && factor > 0) {
+    std::vector<Eigen::Vector2d> start(path.poses.size());
+    for (size_t i = 0; i < start.size(); ++i) {
+      start[i] = {state->poses[i][kPoseA], state->poses[i][kPoseC]};
+    }
+    ruling = RulingAngles(*in.surface, state->u, state->beyond_ends, start, o.axis_cone_deg);
+  }
   // A family whose weights are all zero adds nothing but work: its zero
   // Jacobians still go through the linear algebra (more than half the
   // surface-free preset's solve, which sets w_third = 0).
   if (o.w_second > 0 || o.w_tip_second > 0) {
     AddStencils<2>(path, free_pose, BreaksSmoothness, state, problem, "second", [&](size_t i) {
+      SmoothnessCost<2>::Reference r;
+      if (RulingWindow<3>(ruling, i, &r)) {
+        return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm,
+                                         factor * o.w_second, o.w_tip_second, r);
+      }
       return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm, o.w_second,
                                        o.w_tip_second);
     });
   }
   if (o.w_third > 0 || o.w_tip_third > 0) {
     AddStencils<3>(path, free_pose, BreaksSmoothness, state, problem, "third", [&](size_t i) {
+      SmoothnessCost<3>::Reference r;
+      if (RulingWindow<4>(ruling, i, &r)) {
+        return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm,
+                                         factor * o.w_third, o.w_tip_third, r);
+      }
       return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm, o.w_third,
                                        o.w_tip_third);
     });

@@ -44,6 +44,14 @@ struct HighAccuracyOptions {
   // mm^4/rad^2 and mm^6/rad^2 (see smoothness_cost.h).
   double w_second = 300;
   double w_third = 3000;
+  // With a surface, where every pose of a stencil has its ruling's angles
+  // (solver/smooth/ruling_angles.h), the second and third derivatives are
+  // of A's and C's departure from those angles, weighted this many times
+  // w_second and w_third: the rulings' own turning is the surface's and
+  // costs nothing, so the departure can be held far stiffer than the
+  // angles without pulling the axis off the surface. 0 differentiates the
+  // angles themselves everywhere. >= 0.
+  double ruling_departure_factor = 100.0;
   // Weights of the second/third derivative of the tip, mm^2 and mm^4.
   double w_tip_second = 1e-2;
   double w_tip_third = 0.0;
