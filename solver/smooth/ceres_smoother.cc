@@ -606,7 +606,6 @@ Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& 
   return Status::Ok();
 }
 
-// The second and third derivatives of the joints and the tip along s.
 // The ruling angles (solver/smooth/ruling_angles.h) of the poses
 // first..first+kCount-1, false when one of them has none.
 template <int kCount>
@@ -619,6 +618,7 @@ bool RulingWindow(const std::vector<std::optional<Eigen::Vector2d>>& angles, siz
   return true;
 }
 
+// The second and third derivatives of the joints and the tip along s.
 void AddSmoothnessFamilies(const SmoothingInputs& in, const HighAccuracyOptions& o,
                            double length_mm, const std::vector<bool>& free_pose,
                            SmoothingState* state, ceres::Problem* problem) {
