@@ -388,7 +388,7 @@ void AddToleranceFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
     const ToleranceBandCost::Band band = BandOf(*in.input, o, i);
     state->families["tolerance"].push_back(problem->AddResidualBlock(
         ToleranceBandCost::Create(band, std::sqrt(o.w_band * band.step_mm / length_mm),
-                                  o.slide_weight),
+                                  /*slide_weight=*/0.0),
         nullptr, state->poses[i].data()));
   }
 }
@@ -520,13 +520,16 @@ Status InitialState(const SmoothingInputs& in, const HighAccuracyOptions& o,
   state->beyond_ends = in.surface ? PosesBeyondRailEnds(in.surface->rail(0), path, state->u)
                                   : std::vector<bool>(n, false);
   // A pose beyond the ends starts where the program has it: a start placed
-  // on the surface puts it on the end ruling, millimetres from there.
-  std::vector<JointVector> joints, input_joints;
-  RETURN_IF_ERROR(in.machine->AssignJoints(guess, &joints));
-  if (std::find(state->beyond_ends.begin(), state->beyond_ends.end(), true) !=
-      state->beyond_ends.end()) {
-    RETURN_IF_ERROR(in.machine->AssignJoints(path, &input_joints));
+  // on the surface puts it on the end ruling, millimetres from there. Its
+  // joints are assigned with the guess's, on the guess's branch and C
+  // winding (the input's own may be the other branch: seed 20 of the
+  // random cases led in at A = +20.6 deg into a cut started at -20.3).
+  ToolPath start = guess;
+  for (size_t i = 0; i < n; ++i) {
+    if (state->beyond_ends[i]) start.poses[i] = path.poses[i];
   }
+  std::vector<JointVector> joints;
+  RETURN_IF_ERROR(in.machine->AssignJoints(start, &joints));
   state->poses.resize(n);
   state->s_mm.assign(n, 0.0);
   state->t_s.assign(n, 0.0);
@@ -549,9 +552,8 @@ Status InitialState(const SmoothingInputs& in, const HighAccuracyOptions& o,
   }
   const double floor_mm = std::max(kMinStep, 1e-3 * total_mm / std::max<size_t>(1, n - 1));
   for (size_t i = 0; i < n; ++i) {
-    const bool beyond = state->beyond_ends[i];
-    const Eigen::Vector3d& p = (beyond ? path : guess).poses[i].p_w_tip;
-    const JointVector& j = beyond ? input_joints[i] : joints[i];
+    const Eigen::Vector3d& p = start.poses[i].p_w_tip;
+    const JointVector& j = joints[i];
     state->poses[i] = {j[kA], j[kC], p.x(), p.y(), p.z()};
     if (i == 0) continue;
     state->s_mm[i] = state->s_mm[i - 1] + std::max(ds[i], floor_mm);

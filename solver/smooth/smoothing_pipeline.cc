@@ -12,6 +12,7 @@
 #include "model/machine/axis_metrics.h"
 #include "model/path/rail_projection.h"
 #include "solver/smooth/even_stations.h"
+#include "solver/smooth/lead_continuation.h"
 #include "solver/smooth/surface_placement.h"
 #include "solver/smooth/tolerance_promise.h"
 #include "solver/smooth/both_ways_round_poles.h"
@@ -444,6 +445,45 @@ Status ChooseStart(const SmoothingRun& run, const ToolPath& stations, const Tool
   return Status::Ok();
 }
 
+// The solved path's leads beyond the surface's ends with their axes
+// continuing the cut's rotary motion (solver/smooth/lead_continuation.h),
+// where that leaves no grid point of the judge farther from the surface
+// than the solve did: a lead that turns while its cutter still touches the
+// end ruling cuts into it (on a random case near the pole, 0.076 mm at the
+// top of the end ruling). `stations`: the path the solve was tied to.
+Status ContinueLeads(const SmoothingRun& run, const ToolPath& stations,
+                     const HighAccuracyOptions& options) {
+  const SmoothingJob& job = run.job;
+  SmoothingResult* result = run.result;
+  result->lead_poses_continued = 0;
+  if (job.surface == nullptr) return Status::Ok();
+  const BSplineCurve& rail = job.surface->rail(0);
+  const std::vector<bool> leads =
+      PosesBeyondRailEnds(rail, stations, ProjectPathOntoRail(rail, stations));
+  ToolPath continued = result->output;
+  const int set = ContinueLeadAxes(*job.machine, leads, stations, options.axis_cone_deg,
+                                   &continued);
+  if (set == 0) return Status::Ok();
+  PathMetrics solved_metrics, continued_metrics;
+  Status s = run.Evaluate("the solved leads", result->output, &solved_metrics);
+  if (s.ok()) s = run.Evaluate("the continued leads", continued, &continued_metrics);
+  if (!s.ok()) return Status::SolverFailure("lead continuation: " + s.message());
+  const std::vector<double>& before = solved_metrics.deviation->deviation_mm;
+  const std::vector<double>& after = continued_metrics.deviation->deviation_mm;
+  // Within this of the surface a point is as good as exact (a fifth of the
+  // tolerance); elsewhere a micrometre of round-off is no worsening.
+  const double exact_mm = 0.2 * options.tolerance_mm;
+  constexpr double kSlackMm = 1e-3 * 1e-3;
+  for (size_t k = 0; k < after.size(); ++k) {
+    if (std::abs(after[k]) > std::max(exact_mm, std::abs(before[k]) + kSlackMm)) {
+      return Status::Ok();
+    }
+  }
+  result->output = std::move(continued);
+  result->lead_poses_continued = set;
+  return Status::Ok();
+}
+
 // The high-accuracy solve's state across its tolerance rounds and its
 // stiffer re-solves: what it starts from, the points held to the
 // tolerance, and what the last round left beyond when the runs that reach
@@ -482,6 +522,7 @@ Status SolveWithinTolerance(const SmoothingRun& run, const HighAccuracyOptions& 
           "the high_accuracy solve failed: Ceres found no usable solution (" +
           result->high_accuracy.message + ")");
     }
+    RETURN_IF_ERROR(ContinueLeads(run, *held->inputs.input, solve_options));
     RETURN_IF_ERROR(run.FinishOutput());
     result->solve_tolerance_mm = solve_options.tolerance_mm;
     result->tolerance_rounds = round;
@@ -829,6 +870,7 @@ Status ToolPieces(const SmoothingJob& job, std::vector<size_t>* first) {
 void AddPieceReports(const SmoothingResult& part, bool feeds, bool high_accuracy,
                      SmoothingResult* result) {
   result->runs_kept_as_input += part.runs_kept_as_input;
+  result->lead_poses_continued += part.lead_poses_continued;
   result->runs_kept.insert(result->runs_kept.end(), part.runs_kept.begin(), part.runs_kept.end());
   result->tolerance_rounds = std::max(result->tolerance_rounds, part.tolerance_rounds);
   result->tolerance_points += part.tolerance_points;

@@ -145,6 +145,9 @@ struct SmoothingResult {
   // weights raised because a run came out worse on peak d2 than the input's
   // (each kept only if held to the tolerance).
   int stiffer_solves = 0;
+  // High accuracy with a surface: lead-in and lead-out poses whose axes
+  // continue the cut's rotary motion (solver/smooth/lead_continuation.h).
+  int lead_poses_continued = 0;
   SplineSmootherReport spline;
   HighAccuracyReport high_accuracy;
   FeedScheduleReport feed;
