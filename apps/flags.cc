@@ -115,7 +115,7 @@ DEFINE_double(w_walls, 1e4,
               "high_accuracy: weight of the walls keeping each axis in its cone and on its side "
               "of the surface and each linear joint inside its travel (0 = off).");
 DEFINE_int32(ruling_samples, 7, "high_accuracy: deviation samples along each ruling.");
-DEFINE_int32(between_samples, 1, "high_accuracy: deviation checks inside each move.");
+DEFINE_int32(between_samples, 2, "high_accuracy: deviation checks inside each move.");
 DEFINE_int32(max_iterations, 100, "high_accuracy: Ceres iteration limit.");
 DEFINE_int32(coarse_poses, 250,
              "high_accuracy: a path of more than twice this many poses is solved coarse to fine, "

@@ -62,7 +62,7 @@ TEST(LeadContinuationTest, LeadsContinueTheCutsRatesSoNoJunctionBendsTheAxes) {
   // As programmed, the rotary axes stop dead at both junctions:
   // 0.5 deg/mm of A lost over a 1 mm step.
   EXPECT_NEAR(PeakSecond(machine, programmed)[0], 0.5 * kDeg, 1e-9);
-  EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, &p.path), 5);
+  EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, 1.0, &p.path), 5);
   std::vector<JointVector> joints;
   ASSERT_TRUE(machine.AssignJoints(p.path, &joints).ok());
   for (size_t i = 0; i < joints.size(); ++i) {
@@ -77,6 +77,21 @@ TEST(LeadContinuationTest, LeadsContinueTheCutsRatesSoNoJunctionBendsTheAxes) {
   EXPECT_LT(peak[1], 1e-9);
 }
 
+TEST(LeadContinuationTest, AFractionOfTheRatesOrTheJunctionsAxisHeld) {
+  const Machine machine = SimMachine();
+  for (double fraction : {0.5, 0.0}) {
+    LeadPath p = MakePath(3, 10, 0);
+    const ToolPath programmed = p.path;
+    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, fraction, &p.path), 3);
+    for (int i = 0; i < 3; ++i) {
+      const double s = i - 3.0;
+      const Eigen::Vector3d expected =
+          AnglesToAxis((30 + fraction * 0.5 * s) * kDeg, (10 - fraction * 0.3 * s) * kDeg);
+      EXPECT_NEAR((p.path.poses[i].a_w - expected).norm(), 0.0, 1e-12) << "pose " << i;
+    }
+  }
+}
+
 TEST(LeadContinuationTest, ALeadIsLeftWhereItsContinuationBreaksARule) {
   const Machine machine = SimMachine();
   {
@@ -84,22 +99,22 @@ TEST(LeadContinuationTest, ALeadIsLeftWhereItsContinuationBreaksARule) {
     LeadPath p = MakePath(2, 6, 0);
     p.path.poses[0].held = true;
     const ToolPath programmed = p.path;
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, &p.path), 0);
+    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, 1.0, &p.path), 0);
     EXPECT_EQ(p.path.poses[1].a_w, programmed.poses[1].a_w);
   }
   {
     // 30 poses of lead-in at 0.5 deg/mm leave a 2 deg cone.
     LeadPath p = MakePath(30, 6, 0);
     const ToolPath programmed = p.path;
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 2.0, &p.path), 0);
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 20.0, &p.path), 30);
+    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 2.0, 1.0, &p.path), 0);
+    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 20.0, 1.0, &p.path), 30);
   }
   {
     // A rapid into the cut: nothing to continue.
     LeadPath p = MakePath(2, 6, 0);
     p.path.poses[2].rapid = true;
     const ToolPath programmed = p.path;
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, &p.path), 0);
+    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, 1.0, &p.path), 0);
   }
   {
     // A cut whose first move is a micrometre takes its rate from the next.
@@ -107,7 +122,7 @@ TEST(LeadContinuationTest, ALeadIsLeftWhereItsContinuationBreaksARule) {
     for (size_t i = 3; i < p.path.poses.size(); ++i) p.path.poses[i].p_w_tip.x() -= 1 - 1e-4;
     p.path.poses[3].a_w = p.path.poses[2].a_w;
     const ToolPath programmed = p.path;
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, &p.path), 2);
+    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, 1.0, &p.path), 2);
     std::vector<JointVector> joints;
     ASSERT_TRUE(machine.AssignJoints(p.path, &joints).ok());
     const double rate = (joints[4][kA] - joints[2][kA]) /

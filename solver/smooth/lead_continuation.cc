@@ -54,7 +54,8 @@ bool JoinedCut(const ToolPath& path, const std::vector<bool>& lead, size_t first
 // Sets the stretch's axes; false, changing nothing, where a rule of the
 // header says to leave it.
 bool Continue(const Machine& machine, const ToolPath& programmed, double cone_deg,
-              const std::vector<JointVector>& joints, const Stretch& s, ToolPath* path) {
+              double rate_fraction, const std::vector<JointVector>& joints, const Stretch& s,
+              ToolPath* path) {
   // The stretch's poses may move (a held pose keeps its programmed axis)
   // and the moves between them are feed moves.
   for (size_t i = s.first; i < s.end; ++i) {
@@ -63,8 +64,8 @@ bool Continue(const Machine& machine, const ToolPath& programmed, double cone_de
   const JointVector& j = joints[s.junction];
   const double step = (path->poses[s.rate_from].p_w_tip - path->poses[s.junction].p_w_tip).norm();
   // The rates towards the lead: the cut's rates away from it, reversed.
-  const double rate_a = (j[kA] - joints[s.rate_from][kA]) / step;
-  const double rate_c = (j[kC] - joints[s.rate_from][kC]) / step;
+  const double rate_a = rate_fraction * (j[kA] - joints[s.rate_from][kA]) / step;
+  const double rate_c = rate_fraction * (j[kC] - joints[s.rate_from][kC]) / step;
   ToolPath continued = *path;
   // Outwards from the junction, by the tips' arc length.
   const bool lead_in = s.junction == s.end;
@@ -92,7 +93,8 @@ bool Continue(const Machine& machine, const ToolPath& programmed, double cone_de
 }  // namespace
 
 int ContinueLeadAxes(const Machine& machine, const std::vector<bool>& lead,
-                     const ToolPath& programmed, double cone_deg, ToolPath* path) {
+                     const ToolPath& programmed, double cone_deg, double rate_fraction,
+                     ToolPath* path) {
   const size_t n = path->poses.size();
   CHECK(lead.size() == n && programmed.poses.size() == n);
   int set = 0;
@@ -106,7 +108,7 @@ int ContinueLeadAxes(const Machine& machine, const std::vector<bool>& lead,
     Stretch s;
     std::vector<JointVector> joints;
     if (JoinedCut(*path, lead, first, end, &s) && machine.AssignJoints(*path, &joints).ok() &&
-        Continue(machine, programmed, cone_deg, joints, s, path)) {
+        Continue(machine, programmed, cone_deg, rate_fraction, joints, s, path)) {
       set += static_cast<int>(end - first);
     }
     first = end;

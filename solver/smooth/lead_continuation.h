@@ -23,7 +23,9 @@ namespace tpopt {
 // Sets the axes of the poses of `path` flagged in `lead` (a lead-in or
 // lead-out beyond the surface's ends, model/path/rail_projection.h
 // PosesBeyondRailEnds) to the continuation of the cut each stretch of them
-// joins by a feed move; the tips stay. A stretch is left as it is where the
+// joins by a feed move, at `rate_fraction` of the cut's rates (1: the
+// cut's own; 0: the junction's axis held, as CAM writes a lead); the tips
+// stay. A stretch is left as it is where the
 // cut's first move is shorter than a micrometre or absent, where it is
 // reached only through a held pose or joins cuts on both sides, where a
 // continued axis would leave `cone_deg` of the programmed axis
@@ -31,7 +33,8 @@ namespace tpopt {
 // path would then leave the machine's travel. Returns how many poses were
 // set. Precondition: lead and programmed have one entry a pose of `path`.
 int ContinueLeadAxes(const Machine& machine, const std::vector<bool>& lead,
-                     const ToolPath& programmed, double cone_deg, ToolPath* path);
+                     const ToolPath& programmed, double cone_deg, double rate_fraction,
+                     ToolPath* path);
 
 }  // namespace tpopt
 

@@ -445,12 +445,49 @@ Status ChooseStart(const SmoothingRun& run, const ToolPath& stations, const Tool
   return Status::Ok();
 }
 
+// The peak |d2A/ds2| or |d2C/ds2|, rad/mm^2, of `path` at its lead poses and
+// the poses next to them.
+double PeakSecondAtLeads(const Machine& machine, const ToolPath& path,
+                         const std::vector<bool>& lead, double default_feed_mm_per_min) {
+  std::vector<JointVector> joints;
+  if (!machine.AssignJoints(path, &joints).ok()) return INFINITY;
+  const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
+  double peak = 0.0;
+  for (size_t i = 0; i < lead.size(); ++i) {
+    const bool near = lead[i] || (i > 0 && lead[i - 1]) || (i + 1 < lead.size() && lead[i + 1]);
+    if (!near) continue;
+    for (int axis : {kA, kC}) peak = std::max(peak, SecondDerivativePerMm2(path, joints, m, i, axis));
+  }
+  return peak;
+}
+
+// Whether no grid point of `after` is farther from the surface than in
+// `before` (on the same grid), but for points within `exact_mm`, which are
+// as good as on it, and a nanometre of round-off.
+bool NoPointFarther(const DeviationReport& before, const DeviationReport& after, double exact_mm) {
+  constexpr double kSlackMm = 1e-6;
+  for (size_t k = 0; k < after.deviation_mm.size(); ++k) {
+    const double limit = std::max(exact_mm, std::abs(before.deviation_mm[k]) + kSlackMm);
+    if (std::abs(after.deviation_mm[k]) > limit) return false;
+  }
+  return true;
+}
+
+Status EvaluateLeads(const SmoothingRun& run, const ToolPath& path, PathMetrics* metrics) {
+  Status s = run.Evaluate("the leads' axes", path, metrics);
+  if (!s.ok()) return Status::SolverFailure("lead continuation: " + s.message());
+  return Status::Ok();
+}
+
 // The solved path's leads beyond the surface's ends with their axes
-// continuing the cut's rotary motion (solver/smooth/lead_continuation.h),
-// where that leaves no grid point of the judge farther from the surface
-// than the solve did: a lead that turns while its cutter still touches the
-// end ruling cuts into it (on a random case near the pole, 0.076 mm at the
-// top of the end ruling). `stations`: the path the solve was tied to.
+// continuing the cut's rotary motion (solver/smooth/lead_continuation.h).
+// For each stretch of leads: at the cut's rates, or half of them, or the
+// junction's axis held, the one that bends the axes least there, where
+// that leaves no grid point of the judge farther from the surface than the
+// solve did (a lead that turns while its cutter still touches the end
+// ruling cuts into it: on a random case near the pole, 0.076 mm at the top
+// of the end ruling at the cut's rates). The solved lead stays where none
+// does better. `stations`: the path the solve was tied to.
 Status ContinueLeads(const SmoothingRun& run, const ToolPath& stations,
                      const HighAccuracyOptions& options) {
   const SmoothingJob& job = run.job;
@@ -460,27 +497,47 @@ Status ContinueLeads(const SmoothingRun& run, const ToolPath& stations,
   const BSplineCurve& rail = job.surface->rail(0);
   const std::vector<bool> leads =
       PosesBeyondRailEnds(rail, stations, ProjectPathOntoRail(rail, stations));
-  ToolPath continued = result->output;
-  const int set = ContinueLeadAxes(*job.machine, leads, stations, options.axis_cone_deg,
-                                   &continued);
-  if (set == 0) return Status::Ok();
-  PathMetrics solved_metrics, continued_metrics;
-  Status s = run.Evaluate("the solved leads", result->output, &solved_metrics);
-  if (s.ok()) s = run.Evaluate("the continued leads", continued, &continued_metrics);
-  if (!s.ok()) return Status::SolverFailure("lead continuation: " + s.message());
-  const std::vector<double>& before = solved_metrics.deviation->deviation_mm;
-  const std::vector<double>& after = continued_metrics.deviation->deviation_mm;
-  // Within this of the surface a point is as good as exact (a fifth of the
-  // tolerance); elsewhere a micrometre of round-off is no worsening.
-  const double exact_mm = 0.2 * options.tolerance_mm;
-  constexpr double kSlackMm = 1e-3 * 1e-3;
-  for (size_t k = 0; k < after.size(); ++k) {
-    if (std::abs(after[k]) > std::max(exact_mm, std::abs(before[k]) + kSlackMm)) {
-      return Status::Ok();
+  const double feed = run.settings.feed.default_feed_mm_per_min;
+  PathMetrics solved;  // the deviation of result->output, once asked for
+  for (size_t first = 0; first < leads.size();) {
+    if (!leads[first]) {
+      ++first;
+      continue;
+    }
+    size_t end = first;
+    while (end < leads.size() && leads[end]) ++end;
+    std::vector<bool> stretch(leads.size(), false);
+    std::fill(stretch.begin() + first, stretch.begin() + end, true);
+    first = end;
+    struct Candidate {
+      ToolPath path;
+      int set = 0;
+      double peak = 0.0;
+    };
+    std::vector<Candidate> candidates;
+    for (double fraction : {1.0, 0.5, 0.0}) {
+      Candidate c{result->output};
+      c.set = ContinueLeadAxes(*job.machine, stretch, stations, options.axis_cone_deg, fraction,
+                               &c.path);
+      c.peak = PeakSecondAtLeads(*job.machine, c.path, stretch, feed);
+      if (c.set > 0) candidates.push_back(std::move(c));
+    }
+    const double solved_peak = PeakSecondAtLeads(*job.machine, result->output, stretch, feed);
+    std::sort(candidates.begin(), candidates.end(),
+              [](const Candidate& a, const Candidate& b) { return a.peak < b.peak; });
+    for (Candidate& c : candidates) {
+      if (c.peak >= solved_peak) break;
+      if (!solved.deviation) RETURN_IF_ERROR(EvaluateLeads(run, result->output, &solved));
+      PathMetrics continued;
+      RETURN_IF_ERROR(EvaluateLeads(run, c.path, &continued));
+      if (NoPointFarther(*solved.deviation, *continued.deviation, 0.2 * options.tolerance_mm)) {
+        result->output = std::move(c.path);
+        result->lead_poses_continued += c.set;
+        solved = std::move(continued);
+        break;
+      }
     }
   }
-  result->output = std::move(continued);
-  result->lead_poses_continued = set;
   return Status::Ok();
 }
 
