@@ -43,6 +43,13 @@ LeadPath MakePath(int lead_in, int cut, int lead_out) {
   return p;
 }
 
+LeadContinuation How(double rate_fraction, double cone_deg) {
+  LeadContinuation how;
+  how.rate_fraction = rate_fraction;
+  how.cone_deg = cone_deg;
+  return how;
+}
+
 std::array<double, 2> PeakSecond(const Machine& machine, const ToolPath& path) {
   std::vector<JointVector> joints;
   EXPECT_TRUE(machine.AssignJoints(path, &joints).ok());
@@ -62,7 +69,7 @@ TEST(LeadContinuationTest, LeadsContinueTheCutsRatesSoNoJunctionBendsTheAxes) {
   // As programmed, the rotary axes stop dead at both junctions:
   // 0.5 deg/mm of A lost over a 1 mm step.
   EXPECT_NEAR(PeakSecond(machine, programmed)[0], 0.5 * kDeg, 1e-9);
-  EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, 1.0, &p.path), 5);
+  EXPECT_EQ(ContinueLeads(machine, p.lead, programmed, How(1.0, 12.0), &p.path), 5);
   std::vector<JointVector> joints;
   ASSERT_TRUE(machine.AssignJoints(p.path, &joints).ok());
   for (size_t i = 0; i < joints.size(); ++i) {
@@ -82,7 +89,7 @@ TEST(LeadContinuationTest, AFractionOfTheRatesOrTheJunctionsAxisHeld) {
   for (double fraction : {0.5, 0.0}) {
     LeadPath p = MakePath(3, 10, 0);
     const ToolPath programmed = p.path;
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, fraction, &p.path), 3);
+    EXPECT_EQ(ContinueLeads(machine, p.lead, programmed, How(fraction, 12.0), &p.path), 3);
     for (int i = 0; i < 3; ++i) {
       const double s = i - 3.0;
       const Eigen::Vector3d expected =
@@ -92,6 +99,28 @@ TEST(LeadContinuationTest, AFractionOfTheRatesOrTheJunctionsAxisHeld) {
   }
 }
 
+TEST(LeadContinuationTest, TheTipsAlongTheCutWithinTheirBand) {
+  const Machine machine = SimMachine();
+  // The programmed lead-in comes in 0.3 mm to the side of the cut's line.
+  LeadPath p = MakePath(3, 10, 0);
+  for (int i = 0; i < 3; ++i) p.path.poses[i].p_w_tip.y() = 0.3;
+  const ToolPath programmed = p.path;
+  LeadContinuation how = How(1.0, 12.0);
+  how.along_cut = true;
+  how.band_mm = 0.2;
+  EXPECT_EQ(ContinueLeads(machine, p.lead, programmed, how, &p.path), 0);
+  how.band_mm = 1.0;
+  EXPECT_EQ(ContinueLeads(machine, p.lead, programmed, how, &p.path), 3);
+  double away = 0;
+  for (int i = 2; i >= 0; --i) {
+    // On the cut's line (y = 0), at the lead's own steps from the junction.
+    away += (programmed.poses[i].p_w_tip - programmed.poses[i + 1].p_w_tip).norm();
+    EXPECT_NEAR((p.path.poses[i].p_w_tip - Eigen::Vector3d(3 - away, 0, 0)).norm(), 0.0, 1e-9)
+        << "pose " << i;
+  }
+  EXPECT_LT(PeakSecond(machine, p.path)[0], 1e-9);
+}
+
 TEST(LeadContinuationTest, ALeadIsLeftWhereItsContinuationBreaksARule) {
   const Machine machine = SimMachine();
   {
@@ -99,22 +128,22 @@ TEST(LeadContinuationTest, ALeadIsLeftWhereItsContinuationBreaksARule) {
     LeadPath p = MakePath(2, 6, 0);
     p.path.poses[0].held = true;
     const ToolPath programmed = p.path;
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, 1.0, &p.path), 0);
+    EXPECT_EQ(ContinueLeads(machine, p.lead, programmed, How(1.0, 12.0), &p.path), 0);
     EXPECT_EQ(p.path.poses[1].a_w, programmed.poses[1].a_w);
   }
   {
     // 30 poses of lead-in at 0.5 deg/mm leave a 2 deg cone.
     LeadPath p = MakePath(30, 6, 0);
     const ToolPath programmed = p.path;
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 2.0, 1.0, &p.path), 0);
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 20.0, 1.0, &p.path), 30);
+    EXPECT_EQ(ContinueLeads(machine, p.lead, programmed, How(1.0, 2.0), &p.path), 0);
+    EXPECT_EQ(ContinueLeads(machine, p.lead, programmed, How(1.0, 20.0), &p.path), 30);
   }
   {
     // A rapid into the cut: nothing to continue.
     LeadPath p = MakePath(2, 6, 0);
     p.path.poses[2].rapid = true;
     const ToolPath programmed = p.path;
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, 1.0, &p.path), 0);
+    EXPECT_EQ(ContinueLeads(machine, p.lead, programmed, How(1.0, 12.0), &p.path), 0);
   }
   {
     // A cut whose first move is a micrometre takes its rate from the next.
@@ -122,7 +151,7 @@ TEST(LeadContinuationTest, ALeadIsLeftWhereItsContinuationBreaksARule) {
     for (size_t i = 3; i < p.path.poses.size(); ++i) p.path.poses[i].p_w_tip.x() -= 1 - 1e-4;
     p.path.poses[3].a_w = p.path.poses[2].a_w;
     const ToolPath programmed = p.path;
-    EXPECT_EQ(ContinueLeadAxes(machine, p.lead, programmed, 12.0, 1.0, &p.path), 2);
+    EXPECT_EQ(ContinueLeads(machine, p.lead, programmed, How(1.0, 12.0), &p.path), 2);
     std::vector<JointVector> joints;
     ASSERT_TRUE(machine.AssignJoints(p.path, &joints).ok());
     const double rate = (joints[4][kA] - joints[2][kA]) /

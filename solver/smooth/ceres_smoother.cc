@@ -400,7 +400,6 @@ void AddToleranceFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
 // within kLeadBandMm of that line and within the axis cone of its
 // programmed axis, free to slide along the line (what that costs: README,
 // "Random cases", stop 24).
-constexpr double kLeadBandMm = 1.0;
 
 void AddLeadBandFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
                        double length_mm, const std::vector<bool>& free_pose,

@@ -156,6 +156,11 @@ struct HighAccuracyOptions {
   static HighAccuracyOptions SurfaceFree();
 };
 
+// With a surface, how far a lead-in or lead-out pose beyond the surface's
+// ends may leave its programmed line, mm (the solve's band, and the
+// lead continuation's, solver/smooth/lead_continuation.h).
+constexpr double kLeadBandMm = 1.0;
+
 // A surface point the solve must bring within the tolerance: one of the
 // active set of grid points where a solve left the surface farther from the
 // cutter than the tolerance (solver/smooth/smoothing_pipeline.cc). Its residual is

@@ -53,9 +53,8 @@ bool JoinedCut(const ToolPath& path, const std::vector<bool>& lead, size_t first
 
 // Sets the stretch's axes; false, changing nothing, where a rule of the
 // header says to leave it.
-bool Continue(const Machine& machine, const ToolPath& programmed, double cone_deg,
-              double rate_fraction, const std::vector<JointVector>& joints, const Stretch& s,
-              ToolPath* path) {
+bool Continue(const Machine& machine, const ToolPath& programmed, const LeadContinuation& how,
+              const std::vector<JointVector>& joints, const Stretch& s, ToolPath* path) {
   // The stretch's poses may move (a held pose keeps its programmed axis)
   // and the moves between them are feed moves.
   for (size_t i = s.first; i < s.end; ++i) {
@@ -64,8 +63,10 @@ bool Continue(const Machine& machine, const ToolPath& programmed, double cone_de
   const JointVector& j = joints[s.junction];
   const double step = (path->poses[s.rate_from].p_w_tip - path->poses[s.junction].p_w_tip).norm();
   // The rates towards the lead: the cut's rates away from it, reversed.
-  const double rate_a = rate_fraction * (j[kA] - joints[s.rate_from][kA]) / step;
-  const double rate_c = rate_fraction * (j[kC] - joints[s.rate_from][kC]) / step;
+  const double rate_a = how.rate_fraction * (j[kA] - joints[s.rate_from][kA]) / step;
+  const double rate_c = how.rate_fraction * (j[kC] - joints[s.rate_from][kC]) / step;
+  const Eigen::Vector3d& tip = path->poses[s.junction].p_w_tip;
+  const Eigen::Vector3d towards = (tip - path->poses[s.rate_from].p_w_tip) / step;
   ToolPath continued = *path;
   // Outwards from the junction, by the tips' arc length.
   const bool lead_in = s.junction == s.end;
@@ -78,8 +79,14 @@ bool Continue(const Machine& machine, const ToolPath& programmed, double cone_de
     const double a = j[kA] + rate_a * away_mm, c = j[kC] + rate_c * away_mm;
     if (std::abs(a) < kPoleDeg * kDeg) return false;
     const Eigen::Vector3d axis = AnglesToAxis(a, c);
-    if (axis.dot(programmed.poses[i].a_w) < std::cos(cone_deg * kDeg)) return false;
+    if (axis.dot(programmed.poses[i].a_w) < std::cos(how.cone_deg * kDeg)) return false;
     continued.poses[i].a_w = axis;
+    if (how.along_cut) {
+      continued.poses[i].p_w_tip = tip + away_mm * towards;
+      if ((continued.poses[i].p_w_tip - programmed.poses[i].p_w_tip).norm() > how.band_mm) {
+        return false;
+      }
+    }
   }
   std::vector<JointVector> continued_joints;
   if (!machine.AssignJoints(continued, &continued_joints).ok() ||
@@ -92,9 +99,8 @@ bool Continue(const Machine& machine, const ToolPath& programmed, double cone_de
 
 }  // namespace
 
-int ContinueLeadAxes(const Machine& machine, const std::vector<bool>& lead,
-                     const ToolPath& programmed, double cone_deg, double rate_fraction,
-                     ToolPath* path) {
+int ContinueLeads(const Machine& machine, const std::vector<bool>& lead,
+                  const ToolPath& programmed, const LeadContinuation& how, ToolPath* path) {
   const size_t n = path->poses.size();
   CHECK(lead.size() == n && programmed.poses.size() == n);
   int set = 0;
@@ -108,7 +114,7 @@ int ContinueLeadAxes(const Machine& machine, const std::vector<bool>& lead,
     Stretch s;
     std::vector<JointVector> joints;
     if (JoinedCut(*path, lead, first, end, &s) && machine.AssignJoints(*path, &joints).ok() &&
-        Continue(machine, programmed, cone_deg, rate_fraction, joints, s, path)) {
+        Continue(machine, programmed, how, joints, s, path)) {
       set += static_cast<int>(end - first);
     }
     first = end;

@@ -481,15 +481,15 @@ Status EvaluateLeads(const SmoothingRun& run, const ToolPath& path, PathMetrics*
 
 // The solved path's leads beyond the surface's ends with their axes
 // continuing the cut's rotary motion (solver/smooth/lead_continuation.h).
-// For each stretch of leads: at the cut's rates, or half of them, or the
-// junction's axis held, the one that bends the axes least there, where
-// that leaves no grid point of the judge farther from the surface than the
-// solve did (a lead that turns while its cutter still touches the end
-// ruling cuts into it: on a random case near the pole, 0.076 mm at the top
-// of the end ruling at the cut's rates). The solved lead stays where none
-// does better. `stations`: the path the solve was tied to.
-Status ContinueLeads(const SmoothingRun& run, const ToolPath& stations,
-                     const HighAccuracyOptions& options) {
+// For each stretch of leads: the tips and axes along the cut's motion, or
+// the axes alone at the cut's rates, half of them, or the junction's held,
+// the one that bends the axes least there, where that leaves no grid point
+// of the judge farther from the surface than the solve did (a lead that
+// turns while its cutter still touches the end ruling cuts into it: on a
+// random case near the pole, 0.076 mm at the top of the end ruling at the
+// cut's rates). The solved lead stays where none does better. `stations`: the path the solve was tied to.
+Status ContinueSolvedLeads(const SmoothingRun& run, const ToolPath& stations,
+                           const HighAccuracyOptions& options) {
   const SmoothingJob& job = run.job;
   SmoothingResult* result = run.result;
   result->lead_poses_continued = 0;
@@ -515,10 +515,16 @@ Status ContinueLeads(const SmoothingRun& run, const ToolPath& stations,
       double peak = 0.0;
     };
     std::vector<Candidate> candidates;
-    for (double fraction : {1.0, 0.5, 0.0}) {
+    for (const auto& [fraction, along_cut] :
+         {std::pair(1.0, true), std::pair(1.0, false), std::pair(0.5, false),
+          std::pair(0.0, false)}) {
+      LeadContinuation how;
+      how.rate_fraction = fraction;
+      how.along_cut = along_cut;
+      how.band_mm = kLeadBandMm;
+      how.cone_deg = options.axis_cone_deg;
       Candidate c{result->output};
-      c.set = ContinueLeadAxes(*job.machine, stretch, stations, options.axis_cone_deg, fraction,
-                               &c.path);
+      c.set = ContinueLeads(*job.machine, stretch, stations, how, &c.path);
       c.peak = PeakSecondAtLeads(*job.machine, c.path, stretch, feed);
       if (c.set > 0) candidates.push_back(std::move(c));
     }
@@ -579,7 +585,7 @@ Status SolveWithinTolerance(const SmoothingRun& run, const HighAccuracyOptions& 
           "the high_accuracy solve failed: Ceres found no usable solution (" +
           result->high_accuracy.message + ")");
     }
-    RETURN_IF_ERROR(ContinueLeads(run, *held->inputs.input, solve_options));
+    RETURN_IF_ERROR(ContinueSolvedLeads(run, *held->inputs.input, solve_options));
     RETURN_IF_ERROR(run.FinishOutput());
     result->solve_tolerance_mm = solve_options.tolerance_mm;
     result->tolerance_rounds = round;
