@@ -108,6 +108,8 @@ nlohmann::json KeptRunJson(const KeptRun& k) {
     j["worst_mm"] = k.worst_mm;
     j["input_mm"] = k.input_mm;
     j["beyond_tolerance_mm"] = k.beyond_mm;
+  } else if (k.reason == "solver") {
+    j["solver_message"] = k.solver_message;
   } else if (k.neighbour_line > 0) {
     j["neighbour_first_line"] = k.neighbour_line;
   }

@@ -68,7 +68,7 @@ Status WriteOutputs(const Invocation& invocation, const Job& job, const Smoothin
 
 // One run put back as programmed: its lines, why, and the figures judged.
 std::string DescribeKeptRun(const KeptRun& k) {
-  char line[256];
+  char line[512];
   int n = std::snprintf(line, sizeof line, "lines %d-%d: ", k.first_line, k.last_line);
   const size_t room = sizeof line - n;
   if (k.reason == "d2") {
@@ -81,6 +81,8 @@ std::string DescribeKeptRun(const KeptRun& k) {
     std::snprintf(line + n, room,
                   "tolerance: %.5f mm at (u %.4f, v %.4f), %.5f mm beyond it (input %.5f mm)",
                   k.worst_mm, k.u, k.v, k.beyond_mm, k.input_mm);
+  } else if (k.reason == "solver") {
+    std::snprintf(line + n, room, "the solve failed: %s", k.solver_message.c_str());
   } else if (k.neighbour_line > 0) {
     std::snprintf(line + n, room, "with its neighbour from line %d", k.neighbour_line);
   } else {
@@ -113,8 +115,8 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
   }
   if (result.runs_kept_as_input > 0) {
     std::printf("  %d cutting runs kept as programmed: smoothing made their peak d2A/ds2 or "
-                "d2C/ds2 higher (in high accuracy also: broke more axis limits, or left "
-                "points beyond the tolerance)\n",
+                "d2C/ds2 higher (in high accuracy also: broke more axis limits, left "
+                "points beyond the tolerance, or every solve failed)\n",
                 result.runs_kept_as_input);
     // Which, and why: one line a run (the first kMaxKeptLines).
     constexpr int kMaxKeptLines = 20;

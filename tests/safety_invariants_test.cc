@@ -100,6 +100,39 @@ TEST_F(SafetyInvariantsTest, OutputNeverLeavesTheTravel) {
   }
 }
 
+// Without the travel walls, every high-accuracy solve on the travel the
+// input uses leaves it (refused at even stations and at the program's own).
+// The input fits, so the program goes back as programmed, every run kept
+// with the solver's failure as its reason, instead of a refusal (issue 16);
+// with the never-worse rule off, the refusal stands, naming the travel.
+TEST_F(SafetyInvariantsTest, AProgramEverySolveOfWhichFailsGoesBackAsProgrammed) {
+  const auto [lo, hi] = JointRange(input_);
+  Machine tight = machine_;
+  for (int a : {kX, kY, kZ, kC}) {
+    tight.limits[a].min = lo[a] - 1e-6;
+    tight.limits[a].max = hi[a] + 1e-6;
+  }
+  SmoothingSettings settings;
+  settings.mode = SmoothingMode::kHighAccuracy;
+  settings.high_accuracy.w_walls = 0;
+  SmoothingResult result;
+  ASSERT_TRUE(RunSmoothing({&input_, &surface_, &cutter_, &tight}, settings, &result).ok());
+  ASSERT_EQ(result.runs_kept.size(), 1u);
+  EXPECT_EQ(result.runs_kept_as_input, 1);
+  EXPECT_EQ(result.runs_kept[0].reason, "solver");
+  EXPECT_NE(result.runs_kept[0].solver_message.find("travel"), std::string::npos)
+      << result.runs_kept[0].solver_message;
+  ASSERT_EQ(result.output.poses.size(), input_.poses.size());
+  for (size_t i = 0; i < input_.poses.size(); ++i) {
+    EXPECT_EQ(result.output.poses[i].p_w_tip, input_.poses[i].p_w_tip) << "pose " << i;
+    EXPECT_EQ(result.output.poses[i].a_w, input_.poses[i].a_w) << "pose " << i;
+  }
+  settings.keep_runs_no_worse = false;
+  const Status refused = RunSmoothing({&input_, &surface_, &cutter_, &tight}, settings, &result);
+  EXPECT_EQ(refused.code(), StatusCode::kSolver);
+  EXPECT_NE(refused.message().find("travel"), std::string::npos) << refused.message();
+}
+
 // CAM writes flank paths with the tip below the floor (issue 16): the SPO
 // path with its tip moved 2 mm down its axis, with a U/V bump and axis noise,
 // on LinuxCNC's sim machine. The smoother once pulled every tip up to rail 0

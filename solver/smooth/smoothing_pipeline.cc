@@ -861,21 +861,54 @@ Status SmoothAtStations(const SmoothingJob& job, const SmoothingSettings& settin
   return Status::Ok();
 }
 
+// Where every high-accuracy solve failed on an input that passed its
+// checks, and so fits the machine, the program goes back as programmed,
+// every run kept with the failure as its reason: the never-worse rule's
+// last word, as for the runs the tolerance cannot hold (issue 16: no
+// refusal where the input fits; under joint interpolation one random case's
+// solves moved a pose out of the travel at even stations and at the
+// program's own).
+Status KeepProgramAfterSolverFailure(const SmoothingJob& job, const SmoothingSettings& settings,
+                                     const std::string& why, SmoothingResult* result,
+                                     ToolPath* guess_out) {
+  *result = SmoothingResult();
+  SmoothingRun run{job, settings, result, settings.deviation, {}};
+  RETURN_IF_ERROR(JudgeInput(&run));
+  result->output = *job.input;
+  result->output_at_input_feed = result->output_metrics = result->input_metrics;
+  const size_t runs = RunStarts(*job.input).size() - 1;
+  KeptRun failed;
+  failed.reason = "solver";
+  failed.solver_message = why;
+  result->runs_kept = ListKeptRuns(*job.input, std::vector<bool>(runs, true),
+                                   std::vector<KeptRun>(runs, failed));
+  result->runs_kept_as_input = static_cast<int>(runs);
+  if (guess_out != nullptr) *guess_out = *job.input;
+  return Status::Ok();
+}
+
 // Everything RunSmoothing does but the feed schedule, with one cutter for
 // the whole path; `guess_out`, if not null, receives the high-accuracy
 // solve's starting path (the input in spline mode). A solve refused at even
 // stations is solved again at the program's own, which the input is known
 // to fit (issue 16: no refusal where the input fits; on one of 200 random
 // cases under joint interpolation the solve at even stations moved a pose
-// out of the travel).
+// out of the travel); one refused there too leaves the program as
+// programmed, where the never-worse rule is on (--keep_runs_no_worse).
 Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& settings,
                            SmoothingResult* result, ToolPath* guess_out) {
   Status s = SmoothAtStations(job, settings, result, guess_out);
-  if (s.code() != StatusCode::kSolver || !result->even_stations) return s;
-  SmoothingSettings own = settings;
-  own.even_stations = false;
-  *result = SmoothingResult();
-  return SmoothAtStations(job, own, result, guess_out);
+  if (s.code() == StatusCode::kSolver && result->even_stations) {
+    SmoothingSettings own = settings;
+    own.even_stations = false;
+    *result = SmoothingResult();
+    s = SmoothAtStations(job, own, result, guess_out);
+  }
+  if (s.code() != StatusCode::kSolver || settings.mode != SmoothingMode::kHighAccuracy ||
+      !settings.keep_runs_no_worse) {
+    return s;
+  }
+  return KeepProgramAfterSolverFailure(job, settings, s.message(), result, guess_out);
 }
 
 // The cutter that cuts the move into `pose`: its tool's, where the program

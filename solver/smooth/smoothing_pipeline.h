@@ -40,7 +40,9 @@ struct KeptRun {
   // "tolerance": it reaches grid points the solve left beyond the
   // tolerance; "neighbour": a neighbour put back was still worse (d2 or
   // limits, through the pose they share) or left the mix beyond the
-  // tolerance.
+  // tolerance; "solver": every high-accuracy solve of the path failed on
+  // an input that fits the machine (`solver_message` says how), and the
+  // whole program went back as programmed.
   std::string reason;
   // d2: the failing axis ("A" or "C", the larger excess) and the run's peak
   // there, input and smoothed, rad per mm^2 (the report gives deg).
@@ -59,6 +61,8 @@ struct KeptRun {
   double beyond_mm = 0.0;
   // neighbour: the first source line of the neighbour that put it back.
   int neighbour_line = 0;
+  // solver: the last solve's failure.
+  std::string solver_message;
 };
 
 struct SmoothingJob {
