@@ -45,6 +45,17 @@ class SafetyInvariantsTest : public ::testing::Test {
     return {lo, hi};
   }
 
+  // The machine with its X, Y, Z and C travel cut to what the input uses.
+  Machine TravelOfInput() {
+    const auto [lo, hi] = JointRange(input_);
+    Machine tight = machine_;
+    for (int a : {kX, kY, kZ, kC}) {
+      tight.limits[a].min = lo[a] - 1e-6;
+      tight.limits[a].max = hi[a] + 1e-6;
+    }
+    return tight;
+  }
+
   RuledSurface surface_;
   Machine machine_;
   ToolPath input_;
@@ -68,12 +79,7 @@ TEST_F(SafetyInvariantsTest, InputOutsideTheTravelIsBadInputNamingPoseAndAxis) {
 // without those limits; the spline method happens to stay inside here), so
 // in each mode it must either stay inside or refuse.
 TEST_F(SafetyInvariantsTest, OutputNeverLeavesTheTravel) {
-  const auto [lo, hi] = JointRange(input_);
-  Machine tight = machine_;
-  for (int a : {kX, kY, kZ, kC}) {
-    tight.limits[a].min = lo[a] - 1e-6;
-    tight.limits[a].max = hi[a] + 1e-6;
-  }
+  const Machine tight = TravelOfInput();
   for (SmoothingMode mode : {SmoothingMode::kSpline, SmoothingMode::kHighAccuracy}) {
     SCOPED_TRACE(mode == SmoothingMode::kSpline ? "spline" : "high_accuracy");
     SmoothingResult loose;
@@ -106,12 +112,7 @@ TEST_F(SafetyInvariantsTest, OutputNeverLeavesTheTravel) {
 // with the solver's failure as its reason, instead of a refusal (issue 16);
 // with the never-worse rule off, the refusal stands, naming the travel.
 TEST_F(SafetyInvariantsTest, AProgramEverySolveOfWhichFailsGoesBackAsProgrammed) {
-  const auto [lo, hi] = JointRange(input_);
-  Machine tight = machine_;
-  for (int a : {kX, kY, kZ, kC}) {
-    tight.limits[a].min = lo[a] - 1e-6;
-    tight.limits[a].max = hi[a] + 1e-6;
-  }
+  const Machine tight = TravelOfInput();
   SmoothingSettings settings;
   settings.mode = SmoothingMode::kHighAccuracy;
   settings.high_accuracy.w_walls = 0;
