@@ -487,7 +487,8 @@ Status EvaluateLeads(const SmoothingRun& run, const ToolPath& path, PathMetrics*
 // of the judge farther from the surface than the solve did (a lead that
 // turns while its cutter still touches the end ruling cuts into it: on a
 // random case near the pole, 0.076 mm at the top of the end ruling at the
-// cut's rates). The solved lead stays where none does better. `stations`: the path the solve was tied to.
+// cut's rates). The solved lead stays where none does better. `stations`:
+// the path the solve was tied to.
 Status ContinueSolvedLeads(const SmoothingRun& run, const ToolPath& stations,
                            const HighAccuracyOptions& options) {
   const SmoothingJob& job = run.job;
