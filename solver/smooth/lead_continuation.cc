@@ -51,7 +51,7 @@ bool JoinedCut(const ToolPath& path, const std::vector<bool>& lead, size_t first
   }
 }
 
-// Sets the stretch's axes; false, changing nothing, where a rule of the
+// Sets the stretch's poses; false, changing nothing, where a rule of the
 // header says to leave it.
 bool Continue(const Machine& machine, const ToolPath& programmed, const LeadContinuation& how,
               const std::vector<JointVector>& joints, const Stretch& s, ToolPath* path) {
