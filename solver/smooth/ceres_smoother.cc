@@ -388,7 +388,7 @@ void AddToleranceFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
     const ToleranceBandCost::Band band = BandOf(*in.input, o, i);
     state->families["tolerance"].push_back(problem->AddResidualBlock(
         ToleranceBandCost::Create(band, std::sqrt(o.w_band * band.step_mm / length_mm),
-                                  /*slide_weight=*/0.0),
+                                  o.slide_weight),
         nullptr, state->poses[i].data()));
   }
 }
@@ -400,7 +400,6 @@ void AddToleranceFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
 // within kLeadBandMm of that line and within the axis cone of its
 // programmed axis, free to slide along the line (what that costs: README,
 // "Random cases", stop 24).
-
 void AddLeadBandFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
                        double length_mm, const std::vector<bool>& free_pose,
                        SmoothingState* state, ceres::Problem* problem) {
