@@ -148,6 +148,10 @@ DEFINE_double(pole_crossing_deg, 4.0,
 DEFINE_bool(keep_runs_no_worse, true,
             "smooth: put back as programmed every cutting run that smoothing made worse on peak "
             "d2A/ds2 or d2C/ds2 (false: write what the method made).");
+DEFINE_double(stiffer_above_flank_d2, 2.0,
+              "smooth: high_accuracy with a surface solves again with stiffer smoothing where "
+              "its peak d2A/ds2 or d2C/ds2 is above this many times the surface's own flank "
+              "(SPO) path's (0 = never).");
 DEFINE_bool(accept_over_tolerance, false,
             "smooth: with a surface, write a high_accuracy result even where it is farther from "
             "the surface than --tolerance_mm (by default it is refused, exit 3, nothing written).");

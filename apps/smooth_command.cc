@@ -1,6 +1,7 @@
 // tpopt smooth: the plain spline method or the high-accuracy mode, with the
 // metrics of the input and the output side by side.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "apps/picture_outputs.h"
 #include "apps/progress_display.h"
 #include "apps/report.h"
+#include "model/base/invalid_field.h"
 #include "model/base/units.h"
 #include "model/io/apt_io.h"
 #include "solver/smooth/smoothing_pipeline.h"
@@ -172,6 +174,7 @@ Status RequestFromFlags(SmoothRequest* request) {
   settings.schedule_feed = FLAGS_schedule_feed;
   settings.accept_over_tolerance = FLAGS_accept_over_tolerance;
   settings.keep_runs_no_worse = FLAGS_keep_runs_no_worse;
+  settings.stiffer_above_flank_d2 = FLAGS_stiffer_above_flank_d2;
   settings.judge_on_input_range = FLAGS_judge_on_input_range;
   settings.even_stations = FLAGS_even_stations;
   settings.resample_step_mm = FLAGS_resample_step_mm;
@@ -185,6 +188,10 @@ Status RequestFromFlags(SmoothRequest* request) {
   if (!(FLAGS_resample_step_mm >= 0)) {
     return Status::Usage("--resample_step_mm=" + std::to_string(FLAGS_resample_step_mm) +
                          " must be >= 0");
+  }
+  if (!(FLAGS_stiffer_above_flank_d2 >= 0) || !std::isfinite(FLAGS_stiffer_above_flank_d2)) {
+    return Status::Usage(InvalidField("--stiffer_above_flank_d2", FLAGS_stiffer_above_flank_d2,
+                                      "finite and >= 0"));
   }
   return CurveOutputOptionsFromFlags(&request->bspline_output, &request->curve_options);
 }

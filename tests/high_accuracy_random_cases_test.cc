@@ -372,30 +372,63 @@ TEST(HighAccuracyRandomCasesPutBackTest, AStifferSolveKeepsTheRunInsteadOfPuttin
   EXPECT_LE(out[1], in[1]);
 }
 
+// Where the solve's axes accelerate more than twice as hard as the
+// surface's own flank path's (SmoothingSettings::stiffer_above_flank_d2),
+// it is solved again stiffer. Seed 91 of the benchmark: its solve left peak
+// d2A/ds2 at 27 x the clean SPO path's, within the tolerance and never worse
+// than the input's, so no other rule asked for more; solved stiffer, both
+// peaks hold within 2 x SPO, at a quarter of the clean DPO path's max |dev|.
+TEST(HighAccuracyRandomCasesPutBackTest, AxesRougherThanTheSurfacesOwnFlankPathAreSolvedStiffer) {
+  RandomCase c;
+  ASSERT_TRUE(MakeCase(91, &c));
+  ASSERT_TRUE(c.fits_machine) << c.description;
+  double u_min = 0, u_max = 0;
+  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
+  const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
+  const double dpo_mm = WorstMm(Brute(c, c.clean_dpo, u_min, u_max));
+  SmoothingSettings settings;
+  settings.mode = SmoothingMode::kHighAccuracy;
+  settings.deviation.interpolation = Interpolation::kTcp;
+  settings.judge_on_input_range = true;
+  settings.stiffer_above_flank_d2 = 0;
+  SmoothingResult rough;
+  ASSERT_TRUE(testing::SmoothRandomCase(c, settings, &rough).ok());
+  EXPECT_EQ(rough.stiffer_solves, 0);
+  EXPECT_GT(PeakSecond(c.machine, rough.output)[0], 2 * spo[0]);
+  settings.stiffer_above_flank_d2 = SmoothingSettings().stiffer_above_flank_d2;
+  SmoothingResult result;
+  ASSERT_TRUE(testing::SmoothRandomCase(c, settings, &result).ok());
+  EXPECT_GE(result.stiffer_solves, 1);
+  EXPECT_EQ(result.runs_kept_as_input, 0);
+  const std::array<double, 2> out = PeakSecond(c.machine, result.output);
+  EXPECT_LE(out[0], 2 * spo[0]);
+  EXPECT_LE(out[1], 2 * spo[1]);
+  EXPECT_LE(WorstMm(Brute(c, result.output, u_min, u_max)), 0.7 * dpo_mm);
+}
+
 // Seeds whose cases hold the targets (11 and 15 since stop 24; 2, 4, 5, 10,
 // 13 and 14 since the solve's even stations, stop 26; 8 again since its
-// lead-out continues the cut's motion, stop 28).
+// lead-out continues the cut's motion, stop 28; 9, 20 and 21 since axes
+// rougher than the surface's flank path are solved stiffer, stop 29).
 INSTANTIATE_TEST_SUITE_P(Passing, HighAccuracyRandomCasesTest,
-                         ::testing::Values(2u, 4u, 5u, 6u, 7u, 8u, 10u, 11u, 13u, 14u, 15u, 17u,
-                                           23u, 24u));
+                         ::testing::Values(2u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u, 13u, 14u, 15u,
+                                           17u, 20u, 21u, 23u, 24u));
 
-// Seeds that still fail (stop 28: at even stations, the departure from the
+// Seeds that still fail (stop 29: at even stations, the departure from the
 // rulings differentiated, the leads' axes continuing the cut's, two
-// deviation checks inside each move); run them with
-// --gtest_also_run_disabled_tests. What fails, measured, as multiples of
-// the clean SPO path's peak d2 (the target: 2) and of the clean DPO path's
-// max |dev| (the target: 1), with stop 27's figures where they changed:
-//  - 1: d2A 24, d2C 2.4 (its end near the pole, where the rulings give no
-//    reference);
+// deviation checks inside each move, rough axes solved stiffer); run them
+// with --gtest_also_run_disabled_tests. What fails, measured, as multiples
+// of the clean SPO path's peak d2 (the target: 2) and of the clean DPO
+// path's max |dev| (the target: 1), with stop 28's figures where they
+// changed:
+//  - 1: d2A 6.6 (24; its d2C, 2.4, now holds; its end near the pole, where
+//    the rulings give no reference);
 //  - 3: max |dev| 2.9;
-//  - 9: d2A 4.4 (5.8);
-//  - 12: max |dev| 1.13 (its d2A, 2.9, now holds);
-//  - 16: max |dev| 1.8; 18: max |dev| 1.55; 19: max |dev| 1.57 (1.52);
-//  - 20: d2A 5.6 (89, at its lead-in);
-//  - 21: d2C 2.9;
-//  - 22: max |dev| 1.007 (1.07), d2A 3.0 (3.4), d2C 7.3 (12.9).
+//  - 12: max |dev| 1.13;
+//  - 16: max |dev| 1.8; 18: max |dev| 1.55; 19: max |dev| 1.57;
+//  - 22: max |dev| 1.005 (1.007), d2C 3.6 (7.3; its d2A, 3.0, now holds).
 INSTANTIATE_TEST_SUITE_P(DISABLED_FailingUntilTheSolverFixes, HighAccuracyRandomCasesTest,
-                         ::testing::Values(1u, 3u, 9u, 12u, 16u, 18u, 19u, 20u, 21u, 22u));
+                         ::testing::Values(1u, 3u, 12u, 16u, 18u, 19u, 22u));
 
 }  // namespace
 }  // namespace tpopt

@@ -11,6 +11,7 @@
 
 #include "model/machine/axis_metrics.h"
 #include "model/path/rail_projection.h"
+#include "model/path/path_generator.h"
 #include "solver/smooth/even_stations.h"
 #include "solver/smooth/lead_continuation.h"
 #include "solver/smooth/surface_placement.h"
@@ -622,14 +623,51 @@ Status SolveWithinTolerance(const SmoothingRun& run, const HighAccuracyOptions& 
   }
 }
 
+// Peak |d2A/ds2| and |d2C/ds2| of `path`, rad/mm^2; infinite where its
+// joints cannot be assigned.
+std::array<double, 2> PeakRotarySecond(const Machine& machine, const ToolPath& path) {
+  std::vector<JointVector> joints;
+  if (!machine.AssignJoints(path, &joints).ok()) return {INFINITY, INFINITY};
+  const MotionReport m = EvaluateMotion(machine, path, joints, MotionOptions());
+  return {m.axes[kA].peak_second_derivative_per_mm2, m.axes[kC].peak_second_derivative_per_mm2};
+}
+
+// The peaks of PeakRotarySecond on the surface's own flank path (the SPO
+// path: each axis along its ruling, leaned by the cutter's taper, at as
+// many stations as the input has poses); infinite where it cannot be made.
+std::array<double, 2> FlankPathPeaks(const SmoothingJob& job) {
+  FlankPathOptions flank;
+  flank.cutter_radius_mm = job.cutter->radius_mm;
+  flank.taper_rad = job.cutter->taper_rad;
+  flank.poses = std::max<int>(4, static_cast<int>(job.input->poses.size()));
+  ToolPath path;
+  if (!GenerateFlankPath(*job.surface, flank, &path).ok()) return {INFINITY, INFINITY};
+  return PeakRotarySecond(*job.machine, path);
+}
+
+// How many times the flank path's peaks `flank` the peak d2A or d2C of
+// `path` is, the greater; 0 where the flank path's is 0.
+double RoughnessOver(const Machine& machine, const ToolPath& path,
+                     const std::array<double, 2>& flank) {
+  const std::array<double, 2> peaks = PeakRotarySecond(machine, path);
+  double ratio = 0.0;
+  for (int k = 0; k < 2; ++k) {
+    if (flank[k] > 0) ratio = std::max(ratio, peaks[k] / flank[k]);
+  }
+  return ratio;
+}
+
 // A run the solve made worse on peak d2 than the input's would go back as
 // programmed by the put-back, and with it the input's deviation (up to 49 x
-// the clean DPO path's on the random cases, issue 16). First the solve is
+// the clean DPO path's on the random cases, issue 16); a path whose axes
+// accelerate more than settings.stiffer_above_flank_d2 times as hard as the
+// surface's own flank path's has kept the CAM's noise. Either way the solve is
 // repeated from its own result with the smoothness weights raised
 // kStifferFactor-fold, at most kStifferSolves times, each held to the
-// tolerance again; a stiffer solve that is refused leaves the last result
-// (and `*options` the weights it was solved with), and the put-back then
-// has the final word.
+// tolerance again; a stiffer solve that is refused, or that was asked for
+// by the flank path's peaks alone and does not come nearer them, leaves the
+// last result (and `*options` the weights it was solved with), and the
+// put-back then has the final word.
 void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSolve* held) {
   const SmoothingJob& job = run.job;
   const SmoothingSettings& settings = run.settings;
@@ -637,16 +675,21 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
   constexpr int kStifferSolves = 2;
   constexpr double kStifferFactor = 10.0;
   ToolPath stiffer_start;
+  const double rough_factor = settings.stiffer_above_flank_d2;
+  std::array<double, 2> flank = {INFINITY, INFINITY};
+  if (rough_factor > 0 && job.surface != nullptr) flank = FlankPathPeaks(job);
   for (int k = 0; k < kStifferSolves && settings.keep_runs_no_worse && job.surface != nullptr &&
                   settings.resample_step_mm <= 0 && held->beyond_runs.empty();
        ++k) {
     std::vector<bool> worse_runs;
     ToolPath composed = result->output;
     if (!KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
-                         NoWorseOn(), &composed, &worse_runs) ||
-        std::none_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; })) {
+                         NoWorseOn(), &composed, &worse_runs)) {
       break;
     }
+    const bool worse = std::any_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; });
+    const double roughness = RoughnessOver(*job.machine, result->output, flank);
+    if (!worse && !(roughness > rough_factor)) break;
     const SmoothingResult kept = *result;
     const std::vector<TolerancePoint> kept_active = held->active;
     stiffer_start = result->output;
@@ -656,7 +699,8 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
     stiffer.w_third *= kStifferFactor;
     stiffer.w_tip_second *= kStifferFactor;
     run.Stage("high_accuracy solve with stiffer smoothing (" + std::to_string(k + 1) + ")");
-    if (!SolveWithinTolerance(run, stiffer, /*may_put_back=*/false, held).ok()) {
+    if (!SolveWithinTolerance(run, stiffer, /*may_put_back=*/false, held).ok() ||
+        (!worse && !(RoughnessOver(*job.machine, result->output, flank) < roughness))) {
       *result = kept;
       held->active = kept_active;
       break;

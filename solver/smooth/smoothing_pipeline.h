@@ -91,6 +91,14 @@ struct SmoothingSettings {
   // d2A/ds2 or d2C/ds2 (SmoothingResult::runs_kept_as_input), so that
   // neither mode returns a program worse on either.
   bool keep_runs_no_worse = true;
+  // High accuracy with a surface, with keep_runs_no_worse: where the
+  // result's peak d2A/ds2 or d2C/ds2 is above this many times that of the
+  // surface's own flank path (the SPO path: each axis along its ruling,
+  // leaned by the taper; model/path/path_generator.h), the axes have kept
+  // the CAM's noise, and the solve is repeated stiffer, as for a run made
+  // worse than the input; the stiffer result is kept where it holds the
+  // tolerance and comes nearer that path's peaks. 0 = never.
+  double stiffer_above_flank_d2 = 2.0;
   // Judge the initial guess and the output on the grid of the input's
   // covered range (CoveredRangeU) instead of each path's own, so that a
   // smoothed path that retreats from the surface's ends is charged for what
