@@ -665,8 +665,8 @@ double RoughnessOver(const Machine& machine, const ToolPath& path,
 // repeated from its own result with the smoothness weights raised
 // kStifferFactor-fold, at most kStifferSolves times, each held to the
 // tolerance again; a stiffer solve that is refused, or that was asked for
-// by the flank path's peaks alone and does not come nearer them, leaves the
-// last result (and `*options` the weights it was solved with), and the
+// by the flank path's peaks alone and does not come nearer them or leaves
+// the surface farther off, leaves the last result (and `*options` the weights it was solved with), and the
 // put-back then has the final word.
 void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSolve* held) {
   const SmoothingJob& job = run.job;
@@ -699,8 +699,15 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
     stiffer.w_third *= kStifferFactor;
     stiffer.w_tip_second *= kStifferFactor;
     run.Stage("high_accuracy solve with stiffer smoothing (" + std::to_string(k + 1) + ")");
+    // Asked for by the flank path's peaks alone, the stiffer solve must
+    // also leave the surface no farther than the solve before it: the
+    // tolerance alone would let it drift to the input's own allowance (or
+    // anywhere, with accept_over_tolerance).
+    constexpr double kSameDeviationMm = 1e-4;
     if (!SolveWithinTolerance(run, stiffer, /*may_put_back=*/false, held).ok() ||
-        (!worse && !(RoughnessOver(*job.machine, result->output, flank) < roughness))) {
+        (!worse && !(RoughnessOver(*job.machine, result->output, flank) < roughness &&
+                     WorstDeviationMm(result->output_at_input_feed) <=
+                         WorstDeviationMm(kept.output_at_input_feed) + kSameDeviationMm))) {
       *result = kept;
       held->active = kept_active;
       break;

@@ -97,7 +97,8 @@ struct SmoothingSettings {
   // leaned by the taper; model/path/path_generator.h), the axes have kept
   // the CAM's noise, and the solve is repeated stiffer, as for a run made
   // worse than the input; the stiffer result is kept where it holds the
-  // tolerance and comes nearer that path's peaks. 0 = never.
+  // tolerance, comes nearer that path's peaks and leaves the surface no
+  // farther off. 0 = never.
   double stiffer_above_flank_d2 = 2.0;
   // Judge the initial guess and the output on the grid of the input's
   // covered range (CoveredRangeU) instead of each path's own, so that a
