@@ -261,7 +261,7 @@ class ToleranceInvariantTest : public ::testing::Test {
 // neighbours) get a penalty of their own. Without the stiffer solves that
 // rough axes ask for (SmoothingSettings::stiffer_above_flank_d2): those
 // start from the first solve's result, which here they bring within the
-// tolerance, and hold their own points (101 of the grid's 4,200 with them).
+// tolerance, and hold points of their own.
 TEST_F(ToleranceInvariantTest, HoldsThePointsBeyondTheToleranceUntilItHolds) {
   SmoothingResult first, held;
   ASSERT_TRUE(Smooth(cam_, 0.01, /*accept_over_tolerance=*/true, &first, 0.0).ok());
