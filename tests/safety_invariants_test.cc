@@ -258,6 +258,7 @@ class ToleranceInvariantTest : public ::testing::Test {
 
 // The tolerance is a constraint on the points that break it, not a weight
 // on the whole surface: the solve's unit stays the stated tolerance, and
+// only a few grid points (those a solve left beyond it and their grid
 // neighbours) get a penalty of their own. Without the stiffer solves that
 // rough axes ask for (SmoothingSettings::stiffer_above_flank_d2): those
 // start from the first solve's result, which here they bring within the

@@ -666,8 +666,8 @@ double RoughnessOver(const Machine& machine, const ToolPath& path,
 // kStifferFactor-fold, at most kStifferSolves times, each held to the
 // tolerance again; a stiffer solve that is refused, or that was asked for
 // by the flank path's peaks alone and does not come nearer them or leaves
-// the surface farther off, leaves the last result (and `*options` the weights it was solved with), and the
-// put-back then has the final word.
+// the surface farther off, leaves the last result (and `*options` the
+// weights it was solved with), and the put-back then has the final word.
 void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSolve* held) {
   const SmoothingJob& job = run.job;
   const SmoothingSettings& settings = run.settings;
