@@ -179,9 +179,10 @@ TEST_F(BadInputMatrixTest, DegeneratePathsNeverCrashOrLeaveHalfFiles) {
     const std::string g = "GOTO/" + std::to_string(18 + 0.1 * i) + ",-4,41.7,0.97,0,0.24\n";
     repeated += g + g;
   }
-  // C winding 11 turns at A = 20 deg, 30 deg a move (at 10 deg, 401 poses
-  // four times off the blade cost 5 min under CI's AddressSanitizer).
-  for (int i = 0; i <= 132; ++i) {
+  // C winding 4 turns at A = 20 deg, 30 deg a move, 4 mm off the blade
+  // (high accuracy took 23 s in Release and 6.5 min under AddressSanitizer
+  // over 11 turns; it takes 3 s over 4).
+  for (int i = 0; i <= 48; ++i) {
     const double c = i * 30 * M_PI / 180, a = 20 * M_PI / 180;
     winding += "GOTO/" + std::to_string(i * 0.1) + ",0,0," + std::to_string(std::sin(a) * std::sin(c)) +
                "," + std::to_string(std::sin(a) * std::cos(c)) + "," + std::to_string(std::cos(a)) +
@@ -203,8 +204,10 @@ TEST_F(BadInputMatrixTest, DegeneratePathsNeverCrashOrLeaveHalfFiles) {
                                 " --in=" + in + " --out=" + out + " --surface=" + kBlade);
       EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1 || r.exit_code == 3)
           << row.name << " " << mode << ": exit " << r.exit_code << " " << r.output;
-      // Repeated poses are common in CAM files and must smooth normally.
-      if (row.name == "repeated.cls") {
+      // Repeated poses are common in CAM files and must smooth normally; a
+      // path that stands on one ruling is judged there (it was once refused
+      // as the solver's failure, exit 3, for its zero-width u range).
+      if (row.name == "repeated.cls" || row.name == "same.cls") {
         EXPECT_EQ(r.exit_code, 0) << mode << ": " << r.output;
       }
       if (r.exit_code == 0) {

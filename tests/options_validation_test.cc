@@ -189,7 +189,7 @@ TEST(OptionsValidationTest, ModelOptions) {
       {[](D* o) { o->samples_v = 0; }, "--samples_v must be >= 2 (got 0)"},
       {[](D* o) { o->substeps = 0; }, "substeps must be >= 1 (got 0)"},
       {[](D* o) { o->u_min = 0.5, o->u_max = 0.2; },
-       "u range (u_min, u_max) must satisfy 0 <= u_min < u_max <= 1, or both be NaN for the "
+       "u range (u_min, u_max) must satisfy 0 <= u_min <= u_max <= 1, or both be NaN for the "
        "path's (got [0.5, 0.2])"},
   });
   ExpectRefused<MotionOptions>([](MotionOptions* o) { o->default_feed_mm_per_min = 0; },

@@ -646,9 +646,9 @@ bool DeviationOptions::IsValid(std::string* why) const {
     problem = InvalidField("--samples_v", samples_v, ">= 2");
   } else if (substeps < 1) {
     problem = InvalidField("substeps", substeps, ">= 1");
-  } else if (!auto_u && !(u_min >= 0.0 && u_min < u_max && u_max <= 1.0)) {
+  } else if (!auto_u && !(u_min >= 0.0 && u_min <= u_max && u_max <= 1.0)) {
     std::ostringstream err;
-    err << "u range (u_min, u_max) must satisfy 0 <= u_min < u_max <= 1, or both be NaN for "
+    err << "u range (u_min, u_max) must satisfy 0 <= u_min <= u_max <= 1, or both be NaN for "
            "the path's (got ["
         << u_min << ", " << u_max << "])";
     problem = err.str();

@@ -56,7 +56,8 @@ struct DeviationOptions {
   // smoothed path that retreats from the surface's ends must be charged for
   // what it leaves, so it is judged on its input's range (RunSmoothing does
   // so) or, by choice, on the whole surface, [0, 1]. Otherwise both finite
-  // with 0 <= u_min < u_max <= 1.
+  // with 0 <= u_min <= u_max <= 1 (equal for the one ruling of a path that
+  // stands on it, as the covered range of one then is).
   double u_min = std::numeric_limits<double>::quiet_NaN();
   double u_max = std::numeric_limits<double>::quiet_NaN();
   // Coarse samples per move before the least distance is refined by Brent's
