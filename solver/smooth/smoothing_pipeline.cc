@@ -623,33 +623,34 @@ Status SolveWithinTolerance(const SmoothingRun& run, const HighAccuracyOptions& 
   }
 }
 
-// Peak |d2A/ds2| and |d2C/ds2| of `path`, rad/mm^2; infinite where its
-// joints cannot be assigned.
-std::array<double, 2> PeakRotarySecond(const Machine& machine, const ToolPath& path) {
-  std::vector<JointVector> joints;
-  if (!machine.AssignJoints(path, &joints).ok()) return {INFINITY, INFINITY};
-  const MotionReport m = EvaluateMotion(machine, path, joints, MotionOptions());
-  return {m.axes[kA].peak_second_derivative_per_mm2, m.axes[kC].peak_second_derivative_per_mm2};
+// Peak |d2A/ds2| and |d2C/ds2| of `motion`, rad/mm^2.
+std::array<double, 2> PeakRotarySecond(const MotionReport& motion) {
+  return {motion.axes[kA].peak_second_derivative_per_mm2,
+          motion.axes[kC].peak_second_derivative_per_mm2};
 }
 
-// The peaks of PeakRotarySecond on the surface's own flank path (the SPO
-// path: each axis along its ruling, leaned by the cutter's taper, at as
-// many stations as the input has poses); infinite where it cannot be made.
+// PeakRotarySecond of the surface's own flank path (the SPO path: each axis
+// along its ruling, leaned by the cutter's taper, at as many stations as
+// the input has poses); infinite where it cannot be made.
 std::array<double, 2> FlankPathPeaks(const SmoothingJob& job) {
   FlankPathOptions flank;
   flank.cutter_radius_mm = job.cutter->radius_mm;
   flank.taper_rad = job.cutter->taper_rad;
   flank.poses = std::max<int>(4, static_cast<int>(job.input->poses.size()));
   ToolPath path;
-  if (!GenerateFlankPath(*job.surface, flank, &path).ok()) return {INFINITY, INFINITY};
-  return PeakRotarySecond(*job.machine, path);
+  std::vector<JointVector> joints;
+  if (!GenerateFlankPath(*job.surface, flank, &path).ok() ||
+      !job.machine->AssignJoints(path, &joints).ok()) {
+    return {INFINITY, INFINITY};
+  }
+  return PeakRotarySecond(EvaluateMotion(*job.machine, path, joints, MotionOptions()));
 }
 
-// How many times the flank path's peaks `flank` the peak d2A or d2C of
-// `path` is, the greater; 0 where the flank path's is 0.
-double RoughnessOver(const Machine& machine, const ToolPath& path,
-                     const std::array<double, 2>& flank) {
-  const std::array<double, 2> peaks = PeakRotarySecond(machine, path);
+// How many times the flank path's peaks `flank` the output's peak d2A or
+// d2C is (as FinishOutput evaluated it), the greater; 0 where the flank
+// path's is 0.
+double RoughnessOver(const SmoothingResult& result, const std::array<double, 2>& flank) {
+  const std::array<double, 2> peaks = PeakRotarySecond(result.output_at_input_feed.motion);
   double ratio = 0.0;
   for (int k = 0; k < 2; ++k) {
     if (flank[k] > 0) ratio = std::max(ratio, peaks[k] / flank[k]);
@@ -688,7 +689,7 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
       break;
     }
     const bool worse = std::any_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; });
-    const double roughness = RoughnessOver(*job.machine, result->output, flank);
+    const double roughness = RoughnessOver(*result, flank);
     if (!worse && !(roughness > rough_factor)) break;
     const SmoothingResult kept = *result;
     const std::vector<TolerancePoint> kept_active = held->active;
@@ -705,7 +706,7 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
     // anywhere, with accept_over_tolerance).
     constexpr double kSameDeviationMm = 1e-4;
     if (!SolveWithinTolerance(run, stiffer, /*may_put_back=*/false, held).ok() ||
-        (!worse && !(RoughnessOver(*job.machine, result->output, flank) < roughness &&
+        (!worse && !(RoughnessOver(*result, flank) < roughness &&
                      WorstDeviationMm(result->output_at_input_feed) <=
                          WorstDeviationMm(kept.output_at_input_feed) + kSameDeviationMm))) {
       *result = kept;
