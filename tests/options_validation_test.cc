@@ -74,6 +74,8 @@ TEST(OptionsValidationTest, HighAccuracyOptions) {
       {[](O* o) { o->limit_margin = 1.5; }, "--limit_margin must be in (0, 1] (got 1.5)"},
       {[](O* o) { o->guard_distances_mm[2] = -1; },
        "guard_distances_mm[2] must be finite and > 0 (got -1)"},
+      {[](O* o) { o->end_guard_distances_mm[0] = 0; },
+       "end_guard_distances_mm[0] must be finite and > 0 (got 0)"},
       {[](O* o) { o->between_min_move_mm = -0.1; },
        "between_min_move_mm must be finite and >= 0 (got -0.1)"},
       {[](O* o) { o->ruling_samples = 1; }, "--ruling_samples must be >= 2 (got 1)"},

@@ -107,19 +107,22 @@ std::array<double, kCount> Window(const std::vector<double>& v, size_t first) {
 }
 
 // Contact points on the ruling at u, and guard points on the rulings at
-// the given distances (mm along rail 0) either side: a cylinder that holds
-// its own ruling can still cut into rulings a millimetre or two away where
-// the surface twists, whatever the pose spacing.
+// the options' guard distances (mm along rail 0) either side: a cylinder
+// that holds its own ruling can still cut into rulings a millimetre or two
+// away where the surface twists, whatever the pose spacing.
 // Guards sit at the ruling's ends and middle only: a cylinder crossing the
 // twisted surface does so along its whole length, so three heights see it,
 // and they cost a third of guarding every contact height.
 DeviationCost::Points RulingPoints(const RuledSurface& surface, double u,
-                                   const std::vector<double>& guard_mm, int samples) {
+                                   const HighAccuracyOptions& o) {
+  const int samples = o.ruling_samples;
   const double speed_mm = std::max(surface.rail(0).Evaluate(u, 1)[1].norm(), 1e-9);
   DeviationCost::Points points;
   for (int k = 0; k < samples; ++k) points.contact_w.push_back(surface.Point(u, k / (samples - 1.0)));
   for (double v : {0.0, 0.5, 1.0}) {
-    for (double d : guard_mm) {
+    std::vector<double> distances_mm = v == 0.5 ? std::vector<double>() : o.end_guard_distances_mm;
+    distances_mm.insert(distances_mm.end(), o.guard_distances_mm.begin(), o.guard_distances_mm.end());
+    for (double d : distances_mm) {
       for (double side : {-1.0, 1.0}) {
         const double ug = u + side * d / speed_mm;
         if (ug >= 0.0 && ug <= 1.0) points.guard_w.push_back(surface.Point(ug, v));
@@ -191,7 +194,7 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
       // A lead-in or lead-out pose touches no ruling: tied to the end
       // ruling like the pose that cuts it, it was pulled millimetres along
       // the path onto it. It is only kept out of the surface there.
-      DeviationCost::Points guard = RulingPoints(*in.surface, state->u[i], o.guard_distances_mm, m);
+      DeviationCost::Points guard = RulingPoints(*in.surface, state->u[i], o);
       guard.guard_w.insert(guard.guard_w.end(), guard.contact_w.begin(), guard.contact_w.end());
       guard.contact_w.clear();
       const double h = PoseShareMm(*state, i);
@@ -213,7 +216,7 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
     const double h_pose = back / (2.0 * (back_cut ? parts_of_move(i - 1) : 1)) + ahead / (2.0 * parts);
     std::vector<ceres::ResidualBlockId>& ids = state->families["deviation"];
     ids.push_back(problem->AddResidualBlock(
-        DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], o.guard_distances_mm, m), settings,
+        DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], o), settings,
                                     std::sqrt(o.w_deviation * h_pose / (length_mm * m))),
         nullptr, state->poses[i].data()));
     if (!forward_cut) continue;
@@ -223,7 +226,7 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
       const double scale = std::sqrt(o.w_deviation * ahead / parts / (length_mm * m));
       ids.push_back(problem->AddResidualBlock(
           DeviationCost::CreateBetweenPoses(
-              RulingPoints(*in.surface, u, o.guard_distances_mm, m), settings, scale, lambda),
+              RulingPoints(*in.surface, u, o), settings, scale, lambda),
           nullptr, state->poses[i].data(), state->poses[i + 1].data()));
     }
   }
@@ -252,10 +255,10 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
                                    o.overcut_factor, o.interpolation,
                                    kToleranceTargetFraction * o.tolerance_mm};
   const ToolPath& path = *in.input;
-  const double guard_reach_mm =
-      o.guard_distances_mm.empty()
-          ? 0.0
-          : *std::max_element(o.guard_distances_mm.begin(), o.guard_distances_mm.end());
+  double guard_reach_mm = 0.0;
+  for (const std::vector<double>* distances : {&o.guard_distances_mm, &o.end_guard_distances_mm}) {
+    for (double d : *distances) guard_reach_mm = std::max(guard_reach_mm, d);
+  }
   for (const TolerancePoint& point : *in.tolerance_points) {
     const Eigen::Vector3d q_w = in.surface->Point(point.u, point.v);
     const double scale = std::sqrt(o.w_deviation * point.weight);
@@ -460,10 +463,14 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
           InvalidField("travel_margin_mm", travel_margin_mm, "finite and > 0"));
   check.Require(limit_margin > 0 && limit_margin <= 1,
           InvalidField("--limit_margin", limit_margin, "in (0, 1]"));
-  for (size_t k = 0; k < guard_distances_mm.size(); ++k) {
-    const double d = guard_distances_mm[k];
-    check.Require(d > 0 && std::isfinite(d),
-            InvalidField("guard_distances_mm[" + std::to_string(k) + "]", d, "finite and > 0"));
+  for (const auto& [name, distances] :
+       {std::pair<std::string, const std::vector<double>*>{"guard_distances_mm", &guard_distances_mm},
+        {"end_guard_distances_mm", &end_guard_distances_mm}}) {
+    for (size_t k = 0; k < distances->size(); ++k) {
+      const double d = (*distances)[k];
+      check.Require(d > 0 && std::isfinite(d),
+              InvalidField(name + "[" + std::to_string(k) + "]", d, "finite and > 0"));
+    }
   }
   check.Require(finite_at_least(between_min_move_mm, 0),
           InvalidField("between_min_move_mm", between_min_move_mm, "finite and >= 0"));

@@ -78,6 +78,14 @@ struct HighAccuracyOptions {
   // Distances (mm along rail 0) of the guard rulings on each side of a
   // pose's own, which its cutter must not cut into (deviation_cost.h).
   std::vector<double> guard_distances_mm = {0.3, 0.6, 1.2, 2.4};
+  // Distances (mm) of guard rulings held at their ends only (v = 0 and 1).
+  // The contact family sees only each cutter's own ruling, so an axis
+  // turned a little about the surface normal costs it nothing, while its
+  // cutter cuts the rulings a tenth or two of a millimetre away by
+  // micrometres at their ends. A guard at the middle as well pushes the
+  // cutter of a strongly twisted surface off its ruling instead (README,
+  // "Random cases", stop 30).
+  std::vector<double> end_guard_distances_mm = {0.15};
   // A point held to the tolerance is a guard at the middle of each move
   // between two poses within the guard distances of it; with a spacing > 0,
   // at points at most this far apart (mm of contact arc length) inside
