@@ -977,13 +977,13 @@ TEST(TpoptCliTest, EvaluateReportsTheTravelSmoothRefuses) {
 // an input the pipeline refuses before any solve is exit 1, naming the
 // file (exit_codes_test holds the whole mapping, exit 3 for kSolver). What
 // was the solver's case here until the merge of s23-ha: no smooth path for
-// the hypar's clean SPO path of 80 poses keeps every grid point within
-// 0.001 mm (or the input's own error) after the four rounds; since then the
+// the hypar's clean SPO path of 80 poses kept every grid point within
+// 0.002 mm (or the input's own error) after the four rounds; since then the
 // run that reaches those points goes back as programmed instead of the
 // result being refused (issue 17), so the command succeeds and writes it.
-// (At 0.002 mm, the test's tolerance until the guard rulings at the
-// rulings' ends, stop 30, the solve now holds the tolerance and the run
-// goes back for its d2C instead: the input's C is constant.)
+// Since the guard rulings at the rulings' ends (stop 30) the solve holds
+// 0.002 mm, and the run goes back for its d2C instead (the input's C is
+// constant), so the test asks for 0.001 mm.
 TEST(TpoptCliTest, SmoothExitsOneForBadInputAndPutsBackWhatTheToleranceCannotHold) {
   TempDir dir;
   const std::string cls = dir.File("spo.cls"), out = dir.File("out.cls");

@@ -112,7 +112,8 @@ std::array<double, kCount> Window(const std::vector<double>& v, size_t first) {
 // away where the surface twists, whatever the pose spacing.
 // Guards sit at the ruling's ends and middle only: a cylinder crossing the
 // twisted surface does so along its whole length, so three heights see it,
-// and they cost a third of guarding every contact height.
+// and they cost a third of guarding every contact height. The end guards
+// (options.end_guard_distances_mm) sit at the two ends alone.
 DeviationCost::Points RulingPoints(const RuledSurface& surface, double u,
                                    const HighAccuracyOptions& o) {
   const int samples = o.ruling_samples;
@@ -120,7 +121,8 @@ DeviationCost::Points RulingPoints(const RuledSurface& surface, double u,
   DeviationCost::Points points;
   for (int k = 0; k < samples; ++k) points.contact_w.push_back(surface.Point(u, k / (samples - 1.0)));
   for (double v : {0.0, 0.5, 1.0}) {
-    std::vector<double> distances_mm = v == 0.5 ? std::vector<double>() : o.end_guard_distances_mm;
+    const bool ruling_end = v != 0.5;
+    std::vector<double> distances_mm = ruling_end ? o.end_guard_distances_mm : std::vector<double>();
     distances_mm.insert(distances_mm.end(), o.guard_distances_mm.begin(), o.guard_distances_mm.end());
     for (double d : distances_mm) {
       for (double side : {-1.0, 1.0}) {
