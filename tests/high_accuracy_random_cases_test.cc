@@ -70,17 +70,26 @@ std::array<double, 2> PeakSecond(const Machine& machine, const ToolPath& path) {
   return {m.axes[kA].peak_second_derivative_per_mm2, m.axes[kC].peak_second_derivative_per_mm2};
 }
 
+// The u range the CAM path covers, which every path of the case is judged on.
+struct CoveredRange {
+  double u_min = 0, u_max = 0;
+};
+CoveredRange InputRange(const RandomCase& c) {
+  CoveredRange r;
+  EXPECT_TRUE(CoveredRangeU(c.surface, c.cam_path, &r.u_min, &r.u_max));
+  return r;
+}
+
 // How far `output` is beyond the tolerance promise (solver/smooth/
 // tolerance_promise.h), mm (negative: within it), by the brute-force judge
-// on the pipeline's grid over the input's covered range; `*out` receives
-// the output's report there.
-double PromiseExcessOnPipelineGridMm(const RandomCase& c, const ToolPath& output,
-                                     DeviationReport* out) {
-  double u_min = 0, u_max = 0;
-  EXPECT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
-  const DeviationReport in = Brute(c, c.cam_path, u_min, u_max, /*pipeline_grid=*/true);
-  *out = Brute(c, output, u_min, u_max, /*pipeline_grid=*/true);
-  return testing::ExcessOverTolerancePromise(c.surface, c.cam_path, in, *out,
+// on the pipeline's grid over `range`; `*out`, if not null, receives the
+// output's report there.
+double PromiseExcessOnPipelineGridMm(const RandomCase& c, const CoveredRange& range,
+                                     const ToolPath& output, DeviationReport* out = nullptr) {
+  const DeviationReport in = Brute(c, c.cam_path, range.u_min, range.u_max, /*pipeline_grid=*/true);
+  const DeviationReport judged = Brute(c, output, range.u_min, range.u_max, /*pipeline_grid=*/true);
+  if (out != nullptr) *out = judged;
+  return testing::ExcessOverTolerancePromise(c.surface, c.cam_path, in, judged,
                                              HighAccuracyOptions().tolerance_mm);
 }
 
@@ -208,14 +217,12 @@ TEST(HighAccuracyRandomCasesPutBackTest, AKeptSolveHoldsThePromiseOnThePipelines
   SmoothingResult result;
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(20, &c, &result, /*even_stations=*/false));
   EXPECT_EQ(result.runs_kept_as_input, 0);
-  DeviationReport out;
-  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, result.output, &out), 1e-4);
-  double u_min = 0, u_max = 0;
-  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
-  EXPECT_LE(testing::ExcessOverTolerancePromise(c.surface, c.cam_path,
-                                                Brute(c, c.cam_path, u_min, u_max),
-                                                Brute(c, result.output, u_min, u_max),
-                                                HighAccuracyOptions().tolerance_mm),
+  const CoveredRange range = InputRange(c);
+  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, range, result.output), 1e-4);
+  EXPECT_LE(testing::ExcessOverTolerancePromise(
+                c.surface, c.cam_path, Brute(c, c.cam_path, range.u_min, range.u_max),
+                Brute(c, result.output, range.u_min, range.u_max),
+                HighAccuracyOptions().tolerance_mm),
             0.002);
 }
 
@@ -236,11 +243,11 @@ TEST(HighAccuracyRandomCasesPutBackTest, ASolveLeftBeyondTheToleranceIsTriedAgai
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(57, &c, &result, /*even_stations=*/false,
                                         /*ruling_departure_factor=*/0));
   EXPECT_EQ(result.runs_kept_as_input, 0);
+  const CoveredRange range = InputRange(c);
   DeviationReport out;
-  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, result.output, &out), 1e-3);
-  double u_min = 0, u_max = 0;
-  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
-  EXPECT_LE(WorstMm(out), WorstMm(Brute(c, c.clean_dpo, u_min, u_max, /*pipeline_grid=*/true)));
+  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, range, result.output, &out), 1e-3);
+  EXPECT_LE(WorstMm(out),
+            WorstMm(Brute(c, c.clean_dpo, range.u_min, range.u_max, /*pipeline_grid=*/true)));
   const std::array<double, 2> smoothed = PeakSecond(c.machine, result.output);
   const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
   EXPECT_LE(smoothed[0], 2 * spo[0]);

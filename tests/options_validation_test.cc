@@ -76,6 +76,11 @@ TEST(OptionsValidationTest, HighAccuracyOptions) {
        "guard_distances_mm[2] must be finite and > 0 (got -1)"},
       {[](O* o) { o->end_guard_distances_mm[0] = 0; },
        "end_guard_distances_mm[0] must be finite and > 0 (got 0)"},
+      {[](O* o) { o->guard_distances_mm[3] = o->guard_distances_mm[1]; },
+       "guard_distances_mm[3] must be distinct from those before it (got 0.6)"},
+      {[](O* o) { o->end_guard_distances_mm = {0.15, 0.3}; },
+       "end_guard_distances_mm[1] must be distinct from those before it and from "
+       "guard_distances_mm (got 0.3)"},
       {[](O* o) { o->between_min_move_mm = -0.1; },
        "between_min_move_mm must be finite and >= 0 (got -0.1)"},
       {[](O* o) { o->ruling_samples = 1; }, "--ruling_samples must be >= 2 (got 1)"},

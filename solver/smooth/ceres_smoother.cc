@@ -120,16 +120,17 @@ DeviationCost::Points RulingPoints(const RuledSurface& surface, double u,
   const double speed_mm = std::max(surface.rail(0).Evaluate(u, 1)[1].norm(), 1e-9);
   DeviationCost::Points points;
   for (int k = 0; k < samples; ++k) points.contact_w.push_back(surface.Point(u, k / (samples - 1.0)));
-  for (double v : {0.0, 0.5, 1.0}) {
-    const bool ruling_end = v != 0.5;
-    std::vector<double> distances_mm = ruling_end ? o.end_guard_distances_mm : std::vector<double>();
-    distances_mm.insert(distances_mm.end(), o.guard_distances_mm.begin(), o.guard_distances_mm.end());
-    for (double d : distances_mm) {
-      for (double side : {-1.0, 1.0}) {
-        const double ug = u + side * d / speed_mm;
-        if (ug >= 0.0 && ug <= 1.0) points.guard_w.push_back(surface.Point(ug, v));
-      }
+  const auto guard_at = [&](double distance_mm, double v) {
+    for (double side : {-1.0, 1.0}) {
+      const double ug = u + side * distance_mm / speed_mm;
+      if (ug >= 0.0 && ug <= 1.0) points.guard_w.push_back(surface.Point(ug, v));
     }
+  };
+  for (double v : {0.0, 0.5, 1.0}) {
+    if (v != 0.5) {
+      for (double d : o.end_guard_distances_mm) guard_at(d, v);
+    }
+    for (double d : o.guard_distances_mm) guard_at(d, v);
   }
   return points;
 }
@@ -472,6 +473,17 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
       const double d = (*distances)[k];
       check.Require(d > 0 && std::isfinite(d),
               InvalidField(name + "[" + std::to_string(k) + "]", d, "finite and > 0"));
+      // A guard ruling at a distance listed twice would weigh twice.
+      const bool end_list = distances == &end_guard_distances_mm;
+      const bool repeated =
+          std::find(distances->begin(), distances->begin() + k, d) != distances->begin() + k ||
+          (end_list && std::find(guard_distances_mm.begin(), guard_distances_mm.end(), d) !=
+                           guard_distances_mm.end());
+      check.Require(!repeated,
+                    InvalidField(name + "[" + std::to_string(k) + "]", d,
+                                 end_list ? "distinct from those before it and from "
+                                            "guard_distances_mm"
+                                          : "distinct from those before it"));
     }
   }
   check.Require(finite_at_least(between_min_move_mm, 0),
