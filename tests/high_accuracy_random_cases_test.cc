@@ -74,10 +74,11 @@ std::array<double, 2> PeakSecond(const Machine& machine, const ToolPath& path) {
 struct CoveredRange {
   double u_min = 0, u_max = 0;
 };
-CoveredRange InputRange(const RandomCase& c) {
-  CoveredRange r;
-  EXPECT_TRUE(CoveredRangeU(c.surface, c.cam_path, &r.u_min, &r.u_max));
-  return r;
+
+// Sets `range` to the case's; a fatal failure where the CAM path covers
+// none (call under ASSERT_NO_FATAL_FAILURE).
+void InputRange(const RandomCase& c, CoveredRange* range) {
+  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &range->u_min, &range->u_max));
 }
 
 // How far `output` is beyond the tolerance promise (solver/smooth/
@@ -217,7 +218,8 @@ TEST(HighAccuracyRandomCasesPutBackTest, AKeptSolveHoldsThePromiseOnThePipelines
   SmoothingResult result;
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(20, &c, &result, /*even_stations=*/false));
   EXPECT_EQ(result.runs_kept_as_input, 0);
-  const CoveredRange range = InputRange(c);
+  CoveredRange range;
+  ASSERT_NO_FATAL_FAILURE(InputRange(c, &range));
   EXPECT_LE(PromiseExcessOnPipelineGridMm(c, range, result.output), 1e-4);
   EXPECT_LE(testing::ExcessOverTolerancePromise(
                 c.surface, c.cam_path, Brute(c, c.cam_path, range.u_min, range.u_max),
@@ -243,7 +245,8 @@ TEST(HighAccuracyRandomCasesPutBackTest, ASolveLeftBeyondTheToleranceIsTriedAgai
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(57, &c, &result, /*even_stations=*/false,
                                         /*ruling_departure_factor=*/0));
   EXPECT_EQ(result.runs_kept_as_input, 0);
-  const CoveredRange range = InputRange(c);
+  CoveredRange range;
+  ASSERT_NO_FATAL_FAILURE(InputRange(c, &range));
   DeviationReport out;
   EXPECT_LE(PromiseExcessOnPipelineGridMm(c, range, result.output, &out), 1e-3);
   EXPECT_LE(WorstMm(out),
