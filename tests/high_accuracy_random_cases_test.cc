@@ -70,25 +70,14 @@ std::array<double, 2> PeakSecond(const Machine& machine, const ToolPath& path) {
   return {m.axes[kA].peak_second_derivative_per_mm2, m.axes[kC].peak_second_derivative_per_mm2};
 }
 
-// The u range the CAM path covers, which every path of the case is judged on.
-struct CoveredRange {
-  double u_min = 0, u_max = 0;
-};
-
-// Sets `range` to the case's; a fatal failure where the CAM path covers
-// none (call under ASSERT_NO_FATAL_FAILURE).
-void InputRange(const RandomCase& c, CoveredRange* range) {
-  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &range->u_min, &range->u_max));
-}
-
 // How far `output` is beyond the tolerance promise (solver/smooth/
 // tolerance_promise.h), mm (negative: within it), by the brute-force judge
-// on the pipeline's grid over `range`; `*out`, if not null, receives the
-// output's report there.
-double PromiseExcessOnPipelineGridMm(const RandomCase& c, const CoveredRange& range,
+// on the pipeline's grid over [u_min, u_max] (the input's covered range);
+// `*out`, if not null, receives the output's report there.
+double PromiseExcessOnPipelineGridMm(const RandomCase& c, double u_min, double u_max,
                                      const ToolPath& output, DeviationReport* out = nullptr) {
-  const DeviationReport in = Brute(c, c.cam_path, range.u_min, range.u_max, /*pipeline_grid=*/true);
-  const DeviationReport judged = Brute(c, output, range.u_min, range.u_max, /*pipeline_grid=*/true);
+  const DeviationReport in = Brute(c, c.cam_path, u_min, u_max, /*pipeline_grid=*/true);
+  const DeviationReport judged = Brute(c, output, u_min, u_max, /*pipeline_grid=*/true);
   if (out != nullptr) *out = judged;
   return testing::ExcessOverTolerancePromise(c.surface, c.cam_path, in, judged,
                                              HighAccuracyOptions().tolerance_mm);
@@ -218,13 +207,13 @@ TEST(HighAccuracyRandomCasesPutBackTest, AKeptSolveHoldsThePromiseOnThePipelines
   SmoothingResult result;
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(20, &c, &result, /*even_stations=*/false));
   EXPECT_EQ(result.runs_kept_as_input, 0);
-  CoveredRange range;
-  ASSERT_NO_FATAL_FAILURE(InputRange(c, &range));
-  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, range, result.output), 1e-4);
-  EXPECT_LE(testing::ExcessOverTolerancePromise(
-                c.surface, c.cam_path, Brute(c, c.cam_path, range.u_min, range.u_max),
-                Brute(c, result.output, range.u_min, range.u_max),
-                HighAccuracyOptions().tolerance_mm),
+  double u_min = 0, u_max = 0;
+  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
+  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, u_min, u_max, result.output), 1e-4);
+  EXPECT_LE(testing::ExcessOverTolerancePromise(c.surface, c.cam_path,
+                                                Brute(c, c.cam_path, u_min, u_max),
+                                                Brute(c, result.output, u_min, u_max),
+                                                HighAccuracyOptions().tolerance_mm),
             0.002);
 }
 
@@ -245,12 +234,11 @@ TEST(HighAccuracyRandomCasesPutBackTest, ASolveLeftBeyondTheToleranceIsTriedAgai
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(57, &c, &result, /*even_stations=*/false,
                                         /*ruling_departure_factor=*/0));
   EXPECT_EQ(result.runs_kept_as_input, 0);
-  CoveredRange range;
-  ASSERT_NO_FATAL_FAILURE(InputRange(c, &range));
+  double u_min = 0, u_max = 0;
+  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
   DeviationReport out;
-  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, range, result.output, &out), 1e-3);
-  EXPECT_LE(WorstMm(out),
-            WorstMm(Brute(c, c.clean_dpo, range.u_min, range.u_max, /*pipeline_grid=*/true)));
+  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, u_min, u_max, result.output, &out), 1e-3);
+  EXPECT_LE(WorstMm(out), WorstMm(Brute(c, c.clean_dpo, u_min, u_max, /*pipeline_grid=*/true)));
   const std::array<double, 2> smoothed = PeakSecond(c.machine, result.output);
   const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
   EXPECT_LE(smoothed[0], 2 * spo[0]);

@@ -471,19 +471,18 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
         {"end_guard_distances_mm", &end_guard_distances_mm}}) {
     for (size_t k = 0; k < distances->size(); ++k) {
       const double d = (*distances)[k];
-      check.Require(d > 0 && std::isfinite(d),
-              InvalidField(name + "[" + std::to_string(k) + "]", d, "finite and > 0"));
+      const std::string field = name + "[" + std::to_string(k) + "]";
+      check.Require(d > 0 && std::isfinite(d), InvalidField(field, d, "finite and > 0"));
       // A guard ruling at a distance listed twice would weigh twice.
       const bool end_list = distances == &end_guard_distances_mm;
       const bool repeated =
           std::find(distances->begin(), distances->begin() + k, d) != distances->begin() + k ||
           (end_list && std::find(guard_distances_mm.begin(), guard_distances_mm.end(), d) !=
                            guard_distances_mm.end());
-      check.Require(!repeated,
-                    InvalidField(name + "[" + std::to_string(k) + "]", d,
-                                 end_list ? "distinct from those before it and from "
-                                            "guard_distances_mm"
-                                          : "distinct from those before it"));
+      check.Require(!repeated, InvalidField(field, d,
+                                            end_list ? "distinct from those before it and from "
+                                                       "guard_distances_mm"
+                                                     : "distinct from those before it"));
     }
   }
   check.Require(finite_at_least(between_min_move_mm, 0),
