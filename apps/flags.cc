@@ -152,6 +152,11 @@ DEFINE_double(stiffer_above_flank_d2, 2.0,
               "smooth: high_accuracy with a surface solves again with stiffer smoothing where "
               "its peak d2A/ds2 or d2C/ds2 is above this many times the surface's own flank "
               "(SPO) path's (0 = never).");
+DEFINE_int32(peak_deviation_rounds, 2,
+             "smooth: high_accuracy with a surface solves again up to this many times to lower "
+             "the result's worst deviation, holding the grid points farther than half of it; "
+             "each round kept only where it keeps the tolerance and roughens no axis beyond "
+             "--stiffer_above_flank_d2 times the flank path's (0 = none, faster).");
 DEFINE_bool(accept_over_tolerance, false,
             "smooth: with a surface, write a high_accuracy result even where it is farther from "
             "the surface than --tolerance_mm (by default it is refused, exit 3, nothing written).");

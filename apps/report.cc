@@ -139,6 +139,7 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
   report["runs_kept"] = nlohmann::json::array();
   for (const KeptRun& k : result.runs_kept) report["runs_kept"].push_back(KeptRunJson(k));
   report["stiffer_solves"] = result.stiffer_solves;
+  report["peak_deviation_rounds"] = result.peak_deviation_rounds;
   report["lead_poses_continued"] = result.lead_poses_continued;
   report["even_stations"] = result.even_stations;
   report["feed_schedule"] = {{"passes", result.feed.passes},

@@ -175,6 +175,7 @@ Status RequestFromFlags(SmoothRequest* request) {
   settings.accept_over_tolerance = FLAGS_accept_over_tolerance;
   settings.keep_runs_no_worse = FLAGS_keep_runs_no_worse;
   settings.stiffer_above_flank_d2 = FLAGS_stiffer_above_flank_d2;
+  settings.peak_deviation_rounds = FLAGS_peak_deviation_rounds;
   settings.judge_on_input_range = FLAGS_judge_on_input_range;
   settings.even_stations = FLAGS_even_stations;
   settings.resample_step_mm = FLAGS_resample_step_mm;
@@ -192,6 +193,10 @@ Status RequestFromFlags(SmoothRequest* request) {
   if (!(FLAGS_stiffer_above_flank_d2 >= 0) || !std::isfinite(FLAGS_stiffer_above_flank_d2)) {
     return Status::Usage(InvalidField("--stiffer_above_flank_d2", FLAGS_stiffer_above_flank_d2,
                                       "finite and >= 0"));
+  }
+  if (FLAGS_peak_deviation_rounds < 0) {
+    return Status::Usage(InvalidField("--peak_deviation_rounds", FLAGS_peak_deviation_rounds,
+                                      ">= 0"));
   }
   return CurveOutputOptionsFromFlags(&request->bspline_output, &request->curve_options);
 }

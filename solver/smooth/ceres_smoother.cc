@@ -251,18 +251,20 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
                         const std::vector<bool>& free_pose, SmoothingState* state,
                         ceres::Problem* problem) {
   if (in.surface == nullptr || in.tolerance_points == nullptr) return;
-  // Only a point's excess over kToleranceTargetFraction of the tolerance
-  // counts (the margin covers the gap between this point on the move and
-  // the judge's exact envelope).
-  DeviationCost::Settings settings{*in.cutter,       in.machine->kinematics, o.tolerance_mm,
-                                   o.overcut_factor, o.interpolation,
-                                   kToleranceTargetFraction * o.tolerance_mm};
+  // Only a point's excess over kToleranceTargetFraction of its bound (the
+  // tolerance, or a lower one) counts, in units of that bound (the margin
+  // covers the gap between this point on the move and the judge's exact
+  // envelope).
   const ToolPath& path = *in.input;
   double guard_reach_mm = 0.0;
   for (const std::vector<double>* distances : {&o.guard_distances_mm, &o.end_guard_distances_mm}) {
     for (double d : *distances) guard_reach_mm = std::max(guard_reach_mm, d);
   }
   for (const TolerancePoint& point : *in.tolerance_points) {
+    const double bound_mm = std::min(o.tolerance_mm, point.bound_mm);
+    const DeviationCost::Settings settings{*in.cutter,       in.machine->kinematics, bound_mm,
+                                           o.overcut_factor, o.interpolation,
+                                           kToleranceTargetFraction * bound_mm};
     const Eigen::Vector3d q_w = in.surface->Point(point.u, point.v);
     const double scale = std::sqrt(o.w_deviation * point.weight);
     DeviationCost::Points contact, guard;

@@ -17,6 +17,7 @@
 #define TPOPT_SOLVER_CERES_SMOOTHER_H_
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <string>
@@ -169,17 +170,20 @@ struct HighAccuracyOptions {
 // lead continuation's, solver/smooth/lead_continuation.h).
 constexpr double kLeadBandMm = 1.0;
 
-// A surface point the solve must bring within the tolerance: one of the
-// active set of grid points where a solve left the surface farther from the
-// cutter than the tolerance (solver/smooth/smoothing_pipeline.cc). Its residual is
-// the deviation family's at that one point, on the move whose contact
-// rulings bracket u, with weight w_deviation * weight, and a dead band of
-// 0.8 tolerance (deviation_cost.h): only its excess over that counts, and
-// at one tolerance of excess it costs what the whole path does at one
-// tolerance, times weight (dimensionless).
+// A surface point the solve must bring within its bound, the tolerance or
+// a lower one: one of the active set of grid points where a solve left the
+// surface farther from the cutter than the tolerance, or than a round
+// lowering the peak deviation asks (solver/smooth/smoothing_pipeline.cc). Its
+// residual is the deviation family's at that one point, on the move whose
+// contact rulings bracket u, with weight w_deviation * weight, measured in
+// units of the bound with a dead band of 0.8 bound (deviation_cost.h): only
+// its excess over that counts, and at one bound of excess it costs what the
+// whole path does at one tolerance, times weight (dimensionless).
 struct TolerancePoint {
   double u = 0.0, v = 0.0;  // surface parameters
   double weight = 1.0;
+  // The bound where below the tolerance, mm (> 0).
+  double bound_mm = INFINITY;
 };
 
 // What the problem is built from. All pointers are non-null except that the

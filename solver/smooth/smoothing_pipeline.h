@@ -97,9 +97,20 @@ struct SmoothingSettings {
   // leaned by the taper; model/path/path_generator.h), the axes have kept
   // the CAM's noise, and the solve is repeated stiffer, as for a run made
   // worse than the input; the stiffer result is kept where it holds the
-  // tolerance, comes nearer that path's peaks and leaves the surface no
-  // farther off. 0 = never.
+  // tolerance, comes nearer that path's peaks and leaves the surface at
+  // most twice as far off. 0 = never.
   double stiffer_above_flank_d2 = 2.0;
+  // High accuracy with a surface: rounds that lower the result's peak
+  // deviation after the solve (0 = none). Least squares spreads the
+  // deviation, and its peak stays where the smoothness and the surface
+  // disagree most; each round holds the grid points farther than half the
+  // worst within that bound and solves again from the result, and keeps
+  // what it made, or a blend of it with the result before, only where that
+  // lowers the worst deviation, keeps the tolerance, makes no run worse on
+  // peak d2 than the input's and leaves the peak d2 within
+  // stiffer_above_flank_d2 times the flank path's (or no rougher than
+  // before). Each round costs a solve (README, "Random cases", stop 32).
+  int peak_deviation_rounds = 2;
   // Judge the initial guess and the output on the grid of the input's
   // covered range (CoveredRangeU) instead of each path's own, so that a
   // smoothed path that retreats from the surface's ends is charged for what
@@ -158,6 +169,9 @@ struct SmoothingResult {
   // weights raised because a run came out worse on peak d2 than the input's
   // (each kept only if held to the tolerance).
   int stiffer_solves = 0;
+  // High accuracy with a surface: the peak-deviation rounds kept
+  // (SmoothingSettings::peak_deviation_rounds).
+  int peak_deviation_rounds = 0;
   // High accuracy with a surface: lead-in and lead-out poses whose axes
   // continue the cut's rotary motion (solver/smooth/lead_continuation.h).
   int lead_poses_continued = 0;
