@@ -731,11 +731,13 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
 }
 
 // The path a fraction t of the way from `from` to `to` (the same poses):
-// each tip along the line between the two, each axis along the arc.
+// each tip along the line between the two, each axis along the arc. A pose
+// the two share (held, a rapid, a link) stays exactly as it is.
 ToolPath Blend(const ToolPath& from, const ToolPath& to, double t) {
   ToolPath out = from;
   for (size_t i = 0; i < out.poses.size(); ++i) {
     ToolPose& pose = out.poses[i];
+    if (pose.p_w_tip == to.poses[i].p_w_tip && pose.a_w == to.poses[i].a_w) continue;
     pose.p_w_tip += t * (to.poses[i].p_w_tip - pose.p_w_tip);
     pose.a_w = ((1 - t) * pose.a_w + t * to.poses[i].a_w).normalized();
   }
@@ -779,9 +781,12 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
     const std::vector<TolerancePoint> kept_active = held->active;
     const double worst = WorstDeviationMm(kept.output_at_input_feed);
     const double roughness = RoughnessOver(kept, flank);
+    const double bound = kPeakBoundFraction * worst;
+    // The penalty is in units of the bound; a path already this close to
+    // the surface has no peak worth a solve.
+    if (!(bound > 1e-3 * options.tolerance_mm)) return;
     std::vector<bool> worse_before;
     if (!RunsWorseThanInput(run, kept.output, &worse_before)) return;
-    const double bound = kPeakBoundFraction * worst;
     const DeviationReport& out = *kept.output_at_input_feed.deviation;
     const std::vector<double> no_allowance(out.deviation_mm.size(), 0.0);
     GrowActiveSet(out, BeyondTolerance(no_allowance, out, bound), {}, &held->active, bound);
