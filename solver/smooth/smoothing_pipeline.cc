@@ -661,6 +661,15 @@ double RoughnessOver(const SmoothingResult& result, const std::array<double, 2>&
   return ratio;
 }
 
+// The runs of `path` that KeepRunsNoWorse would put back; false where the
+// runs do not pair up with the input's.
+bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vector<bool>* worse) {
+  ToolPath composed = path;
+  return KeepRunsNoWorse(*run.job.input, *run.job.machine,
+                         run.settings.feed.default_feed_mm_per_min, NoWorseOn(), &composed,
+                         worse);
+}
+
 // A run the solve made worse on peak d2 than the input's would go back as
 // programmed by the put-back, and with it the input's deviation (up to 49 x
 // the clean DPO path's on the random cases, issue 16); a path whose axes
@@ -670,8 +679,9 @@ double RoughnessOver(const SmoothingResult& result, const std::array<double, 2>&
 // kStifferFactor-fold, at most kStifferSolves times, each held to the
 // tolerance again; a stiffer solve that is refused, or that was asked for
 // by the flank path's peaks alone and does not come nearer them or leaves
-// the surface more than twice as far off, leaves the last result (and `*options` the
-// weights it was solved with), and the put-back then has the final word.
+// the surface more than twice as far off, leaves the last result (and
+// `*options` the weights it was solved with), and the put-back then has
+// the final word.
 void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSolve* held) {
   const SmoothingJob& job = run.job;
   const SmoothingSettings& settings = run.settings;
@@ -686,11 +696,7 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
                   settings.resample_step_mm <= 0 && held->beyond_runs.empty();
        ++k) {
     std::vector<bool> worse_runs;
-    ToolPath composed = result->output;
-    if (!KeepRunsNoWorse(*job.input, *job.machine, settings.feed.default_feed_mm_per_min,
-                         NoWorseOn(), &composed, &worse_runs)) {
-      break;
-    }
+    if (!RunsWorseThanInput(run, result->output, &worse_runs)) break;
     const bool worse = std::any_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; });
     const double roughness = RoughnessOver(*result, flank);
     if (!worse && !(roughness > rough_factor)) break;
@@ -742,15 +748,6 @@ ToolPath Blend(const ToolPath& from, const ToolPath& to, double t) {
     pose.a_w = ((1 - t) * pose.a_w + t * to.poses[i].a_w).normalized();
   }
   return out;
-}
-
-// The runs of `path` that KeepRunsNoWorse would put back; false where the
-// runs do not pair up with the input's.
-bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vector<bool>* worse) {
-  ToolPath composed = path;
-  return KeepRunsNoWorse(*run.job.input, *run.job.machine,
-                         run.settings.feed.default_feed_mm_per_min, NoWorseOn(), &composed,
-                         worse);
 }
 
 // SmoothingSettings::peak_deviation_rounds. The rounds hold the grid points
