@@ -110,6 +110,8 @@ struct SmoothingSettings {
   // peak d2 than the input's and leaves the peak d2 within
   // stiffer_above_flank_d2 times the flank path's (or no rougher than
   // before). Each round costs a solve (README, "Random cases", stop 32).
+  // No round runs with accept_over_tolerance, where there is no promise
+  // for a blend to keep.
   int peak_deviation_rounds = 2;
   // Judge the initial guess and the output on the grid of the input's
   // covered range (CoveredRangeU) instead of each path's own, so that a
