@@ -681,8 +681,9 @@ bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vect
 // by the flank path's peaks alone and does not come nearer them or leaves
 // the surface more than twice as far off, leaves the last result (and
 // `*options` the weights it was solved with), and the put-back then has
-// the final word.
-void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSolve* held) {
+// the final word. `flank`: FlankPathPeaks.
+void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
+                  HighAccuracyOptions* options, HeldSolve* held) {
   const SmoothingJob& job = run.job;
   const SmoothingSettings& settings = run.settings;
   SmoothingResult* result = run.result;
@@ -690,15 +691,16 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
   constexpr double kStifferFactor = 10.0;
   ToolPath stiffer_start;
   const double rough_factor = settings.stiffer_above_flank_d2;
-  std::array<double, 2> flank = {INFINITY, INFINITY};
-  if (rough_factor > 0 && job.surface != nullptr) flank = FlankPathPeaks(job);
+  // With the factor at 0 the flank path's peaks ask for no stiffer solve.
+  const std::array<double, 2> rough_flank =
+      rough_factor > 0 ? flank : std::array<double, 2>{INFINITY, INFINITY};
   for (int k = 0; k < kStifferSolves && settings.keep_runs_no_worse && job.surface != nullptr &&
                   settings.resample_step_mm <= 0 && held->beyond_runs.empty();
        ++k) {
     std::vector<bool> worse_runs;
     if (!RunsWorseThanInput(run, result->output, &worse_runs)) break;
     const bool worse = std::any_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; });
-    const double roughness = RoughnessOver(*result, flank);
+    const double roughness = RoughnessOver(*result, rough_flank);
     if (!worse && !(roughness > rough_factor)) break;
     const SmoothingResult kept = *result;
     const std::vector<TolerancePoint> kept_active = held->active;
@@ -720,13 +722,12 @@ void SolveStiffer(const SmoothingRun& run, HighAccuracyOptions* options, HeldSol
     // tenth to a third of the clean DPO path's max |dev| (README, "Random
     // cases", stop 32).
     constexpr double kStifferDeviationGrowth = 2.0;
+    const double kept_worst = WorstDeviationMm(kept.output_at_input_feed);
     if (!SolveWithinTolerance(run, stiffer, /*may_put_back=*/false, held).ok() ||
-        (!worse && !(RoughnessOver(*result, flank) < roughness &&
+        (!worse && !(RoughnessOver(*result, rough_flank) < roughness &&
                      WorstDeviationMm(result->output_at_input_feed) <=
-                         std::max(kStifferDeviationGrowth *
-                                      WorstDeviationMm(kept.output_at_input_feed),
-                                  WorstDeviationMm(kept.output_at_input_feed) +
-                                      kSameDeviationMm)))) {
+                         std::max(kStifferDeviationGrowth * kept_worst,
+                                  kept_worst + kSameDeviationMm)))) {
       *result = kept;
       held->active = kept_active;
       break;
@@ -757,16 +758,15 @@ ToolPath Blend(const ToolPath& from, const ToolPath& to, double t) {
 // solve's, so the peak d2 comes down with it; on the random cases the half
 // blend kept most of the gain, seed 50: 0.105 -> 0.057 mm, its peak d2
 // lower than either path's). A round that lowers the peak by less than
-// kPeakGain is the last.
+// kPeakGain is the last. `flank`: FlankPathPeaks.
 void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& options,
-                        HeldSolve* held) {
+                        const std::array<double, 2>& flank, HeldSolve* held) {
   const SmoothingJob& job = run.job;
   SmoothingResult* result = run.result;
   if (job.surface == nullptr || !held->held_to_tolerance || !held->beyond_runs.empty()) return;
   constexpr double kPeakBoundFraction = 0.5;
   constexpr double kPeakBlends[] = {1.0, 0.5, 0.25};
   constexpr double kPeakGain = 0.02;
-  const std::array<double, 2> flank = FlankPathPeaks(job);
   // The flank path here is at the input's pose count; a judge's at another
   // count peaks a few per cent apart (the benchmark's: seed 4 at 2.03 x it
   // where this one said 2.0), so a round may not roughen past this share.
@@ -894,8 +894,12 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& stations,
       *result = before;
     }
   }
-  SolveStiffer(run, &options, &held);
-  LowerPeakDeviation(run, options, &held);
+  // What the stiffer solves and the peak rounds measure roughness against.
+  const std::array<double, 2> flank = job.surface != nullptr
+                                          ? FlankPathPeaks(job)
+                                          : std::array<double, 2>{INFINITY, INFINITY};
+  SolveStiffer(run, flank, &options, &held);
+  LowerPeakDeviation(run, options, flank, &held);
   const bool held_to_tolerance = held.held_to_tolerance;
   // The path to be returned. Held to the tolerance it leaves no grid
   // point beyond both the tolerance and the input's allowance, a promise
