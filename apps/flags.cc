@@ -154,7 +154,8 @@ DEFINE_double(stiffer_above_flank_d2, 2.0,
               "(SPO) path's (0 = never).");
 DEFINE_int32(peak_deviation_rounds, 2,
              "smooth: high_accuracy with a surface solves again up to this many times to lower "
-             "the result's worst deviation, holding the grid points farther than half of it; "
+             "the result's worst deviation, holding the grid points farther than half of it (on "
+             "every other grid line); "
              "each round kept only where it keeps the tolerance and roughens no axis beyond "
              "--stiffer_above_flank_d2 times the flank path's (0 = none, faster).");
 DEFINE_bool(accept_over_tolerance, false,
