@@ -774,12 +774,12 @@ std::vector<size_t> PeakRoundPoints(const DeviationReport& out, double bound_mm)
 }
 
 // SmoothingSettings::peak_deviation_rounds. The rounds hold the grid points
-// farther than kPeakBoundFraction of the worst (PeakRoundPoints); a solve that lowers the
-// peak by bending the axes harder than allowed is tried as kPeakBlends of
-// the way from the result before (each pose's bend is that fraction of the
-// solve's, so the peak d2 comes down with it; on the random cases the half
-// blend kept most of the gain, seed 50: 0.105 -> 0.057 mm, its peak d2
-// lower than either path's). A round that lowers the peak by less than
+// farther than kPeakBoundFraction of the worst (PeakRoundPoints); a solve
+// that lowers the peak by bending the axes harder than allowed is tried as
+// kPeakBlends of the way from the result before (each pose's bend is that
+// fraction of the solve's, so the peak d2 comes down with it; on the random
+// cases the half blend kept most of the gain, seed 50: 0.105 -> 0.057 mm,
+// its peak d2 lower than either path's). A round that lowers the peak by less than
 // kPeakGain is the last. `flank`: FlankPathPeaks.
 void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& options,
                         const std::array<double, 2>& flank, HeldSolve* held) {
