@@ -482,22 +482,21 @@ TEST(HighAccuracyRandomCasesTest, PeakDeviationRoundsLowerTheWorstPoint) {
 
 INSTANTIATE_TEST_SUITE_P(Passing, HighAccuracyRandomCasesTest,
                          ::testing::Values(2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 13u,
-                                           14u, 15u, 16u, 17u, 18u, 19u, 20u, 23u, 24u));
+                                           14u, 15u, 16u, 17u, 18u, 19u, 20u, 21u, 23u, 24u));
 
-// Seeds that still fail (stop 30: at even stations, the departure from the
+// Seeds that still fail (stop 34: at even stations, the departure from the
 // rulings differentiated, the leads' axes continuing the cut's, two
-// deviation checks inside each move, rough axes solved stiffer, guard
-// rulings at 0.15 mm at the rulings' ends); run them with
-// --gtest_also_run_disabled_tests. What fails, measured, as multiples of
-// the clean SPO path's peak d2 (the target: 2) and of the clean DPO path's
-// max |dev| (the target: 1), with stop 29's figures where they changed:
-//  - 1: d2A 24, d2C 2.4 (its end near the pole, where the rulings give no
-//    reference);
-//  - 21: d2C 2.9 (the stiffer solve that would bring it within 2 x leaves
-//    the surface farther off);
-//  - 22: max |dev| 1.03 (1.005), d2C 3.5 (3.6).
+// deviation checks inside each move, rough axes solved stiffer from both
+// starts, guard rulings at 0.15 mm at the rulings' ends, peak-deviation
+// rounds); run them with --gtest_also_run_disabled_tests. What fails,
+// measured, as multiples of the clean SPO path's peak d2 (the target: 2),
+// with stop 30's figures where they changed:
+//  - 1: d2A 6.5 (24), its end near the pole, where the rulings give no
+//    reference;
+//  - 22: d2C 3.4 (3.5); its max |dev| is now within the clean DPO path's
+//    (1.03 at stop 30, 0.99).
 INSTANTIATE_TEST_SUITE_P(DISABLED_FailingUntilTheSolverFixes, HighAccuracyRandomCasesTest,
-                         ::testing::Values(1u, 21u, 22u));
+                         ::testing::Values(1u, 22u));
 
 }  // namespace
 }  // namespace tpopt

@@ -676,13 +676,18 @@ bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vect
 // the clean DPO path's on the random cases, issue 16); a path whose axes
 // accelerate more than settings.stiffer_above_flank_d2 times as hard as the
 // surface's own flank path's has kept the CAM's noise. Either way the solve is
-// repeated from its own result with the smoothness weights raised
-// kStifferFactor-fold, at most kStifferSolves times, each held to the
-// tolerance again; a stiffer solve that is refused, or that was asked for
-// by the flank path's peaks alone and does not come nearer them or leaves
-// the surface more than twice as far off, leaves the last result (and
-// `*options` the weights it was solved with), and the put-back then has
-// the final word. `flank`: FlankPathPeaks.
+// repeated with the smoothness weights raised kStifferFactor-fold, at most
+// kStifferSolves times, each held to the tolerance again, from two starts:
+// its own result, and the start the first solve had. A rough result can be
+// a local minimum the stiffer weights do not leave (an odd-even ripple of
+// the stations along the path, seed 174), which the first solve's start
+// never entered; where both are taken the smoother is kept (README,
+// "Random cases", stop 34). A stiffer solve that is refused, or that was
+// asked for by the flank path's peaks alone and does not come nearer them
+// or leaves the surface more than twice as far off, is not taken; with
+// neither taken the last result stays (and `*options` the weights it was
+// solved with), and the put-back then has the final word. `flank`:
+// FlankPathPeaks.
 void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
                   HighAccuracyOptions* options, HeldSolve* held) {
   const SmoothingJob& job = run.job;
@@ -691,6 +696,9 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
   constexpr int kStifferSolves = 2;
   constexpr double kStifferFactor = 10.0;
   ToolPath stiffer_start;
+  // Where the first solve started (a path of SolveHighAccuracy's); the
+  // inputs point to it again on return.
+  const ToolPath* const first_start = held->inputs.initial_guess;
   const double rough_factor = settings.stiffer_above_flank_d2;
   // With the factor at 0 the flank path's peaks ask for no stiffer solve.
   const std::array<double, 2> rough_flank =
@@ -705,8 +713,6 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
     if (!worse && !(roughness > rough_factor)) break;
     const SmoothingResult kept = *result;
     const std::vector<TolerancePoint> kept_active = held->active;
-    stiffer_start = result->output;
-    held->inputs.initial_guess = &stiffer_start;
     HighAccuracyOptions stiffer = *options;
     stiffer.w_second *= kStifferFactor;
     stiffer.w_third *= kStifferFactor;
@@ -724,18 +730,37 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
     // cases", stop 32).
     constexpr double kStifferDeviationGrowth = 2.0;
     const double kept_worst = WorstDeviationMm(kept.output_at_input_feed);
-    if (!SolveWithinTolerance(run, stiffer, /*may_put_back=*/false, held).ok() ||
-        (!worse && !(RoughnessOver(*result, rough_flank) < roughness &&
+    // The stiffer solve from `from` into *result and held->active; false
+    // (and both as kept) where it is not taken.
+    const auto solve_from = [&](const ToolPath& from) {
+      stiffer_start = from;
+      held->inputs.initial_guess = &stiffer_start;
+      if (SolveWithinTolerance(run, stiffer, /*may_put_back=*/false, held).ok() &&
+          (worse || (RoughnessOver(*result, rough_flank) < roughness &&
                      WorstDeviationMm(result->output_at_input_feed) <=
                          std::max(kStifferDeviationGrowth * kept_worst,
                                   kept_worst + kSameDeviationMm)))) {
+        return true;
+      }
       *result = kept;
       held->active = kept_active;
+      return false;
+    };
+    if (solve_from(kept.output)) {
+      const SmoothingResult from_result = *result;
+      const std::vector<TolerancePoint> from_result_active = held->active;
+      if (!(solve_from(*first_start) &&
+            RoughnessOver(*result, rough_flank) < RoughnessOver(from_result, rough_flank))) {
+        *result = from_result;
+        held->active = from_result_active;
+      }
+    } else if (!solve_from(*first_start)) {
       break;
     }
     *options = stiffer;
     ++result->stiffer_solves;
   }
+  held->inputs.initial_guess = first_start;
 }
 
 // The path a fraction t of the way from `from` to `to` (the same poses):
