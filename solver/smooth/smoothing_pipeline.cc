@@ -678,11 +678,12 @@ bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vect
 // surface's own flank path's has kept the CAM's noise. Either way the solve is
 // repeated with the smoothness weights raised kStifferFactor-fold, at most
 // kStifferSolves times, each held to the tolerance again, from two starts:
-// its own result, and the start the first solve had. A rough result can be
-// a local minimum the stiffer weights do not leave (an odd-even ripple of
-// the stations along the path, seed 174), which the first solve's start
-// never entered; where both are taken the smoother is kept (README,
-// "Random cases", stop 34). A stiffer solve that is refused, or that was
+// its own result, and the start the first solve had. From a rough result
+// the stiffer solve can stay in its valley or roughen further (seed 199:
+// 3.7 -> 34 x the flank path's peak d2 from its result, 2.5 x from the
+// first start; seed 130's from its result was refused); where both are
+// taken the smoother is kept (README, "Random cases", stop 34). A stiffer
+// solve that is refused, or that was
 // asked for by the flank path's peaks alone and does not come nearer them
 // or leaves the surface more than twice as far off, is not taken; with
 // neither taken the last result stays (and `*options` the weights it was
