@@ -683,12 +683,11 @@ bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vect
 // 3.7 -> 34 x the flank path's peak d2 from its result, 2.5 x from the
 // first start; seed 130's from its result was refused); where both are
 // taken the smoother is kept (README, "Random cases", stop 34). A stiffer
-// solve that is refused, or that was
-// asked for by the flank path's peaks alone and does not come nearer them
-// or leaves the surface more than twice as far off, is not taken; with
-// neither taken the last result stays (and `*options` the weights it was
-// solved with), and the put-back then has the final word. `flank`:
-// FlankPathPeaks.
+// solve that is refused, or that was asked for by the flank path's peaks
+// alone and does not come nearer them or leaves the surface more than
+// twice as far off, is not taken; with neither taken the last result
+// stays (and `*options` the weights it was solved with), and the put-back
+// then has the final word. `flank`: FlankPathPeaks.
 void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
                   HighAccuracyOptions* options, HeldSolve* held) {
   const SmoothingJob& job = run.job;
@@ -805,8 +804,8 @@ std::vector<size_t> PeakRoundPoints(const DeviationReport& out, double bound_mm)
 // kPeakBlends of the way from the result before (each pose's bend is that
 // fraction of the solve's, so the peak d2 comes down with it; on the random
 // cases the half blend kept most of the gain, seed 50: 0.105 -> 0.057 mm,
-// its peak d2 lower than either path's). A round that lowers the peak by less than
-// kPeakGain is the last. `flank`: FlankPathPeaks.
+// its peak d2 lower than either path's). A round that lowers the peak by
+// less than kPeakGain is the last. `flank`: FlankPathPeaks.
 void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& options,
                         const std::array<double, 2>& flank, HeldSolve* held) {
   const SmoothingJob& job = run.job;
