@@ -695,6 +695,10 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
   SmoothingResult* result = run.result;
   constexpr int kStifferSolves = 2;
   constexpr double kStifferFactor = 10.0;
+  // The tip's d2 weighs at least this much in a stiffer solve (mm^2): a
+  // rough result's poses can slide to and fro along the path, which the
+  // default weight barely sees (README, "Random cases", stop 35).
+  constexpr double kStifferTipMm2 = 10.0;
   ToolPath stiffer_start;
   // Where the first solve started (a path of SolveHighAccuracy's); the
   // inputs point to it again on return.
@@ -716,7 +720,7 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
     HighAccuracyOptions stiffer = *options;
     stiffer.w_second *= kStifferFactor;
     stiffer.w_third *= kStifferFactor;
-    stiffer.w_tip_second *= kStifferFactor;
+    stiffer.w_tip_second = std::max(stiffer.w_tip_second * kStifferFactor, kStifferTipMm2);
     run.Stage("high_accuracy solve with stiffer smoothing (" + std::to_string(k + 1) + ")");
     // Asked for by the flank path's peaks alone, the stiffer solve must
     // also leave the surface little farther than the solve before it: the
