@@ -676,9 +676,10 @@ bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vect
 // the clean DPO path's on the random cases, issue 16); a path whose axes
 // accelerate more than settings.stiffer_above_flank_d2 times as hard as the
 // surface's own flank path's has kept the CAM's noise. Either way the solve is
-// repeated with the smoothness weights raised kStifferFactor-fold, at most
-// kStifferSolves times, each held to the tolerance again, from two starts:
-// its own result, and the start the first solve had. From a rough result
+// repeated with the smoothness weights raised kStifferFactor-fold (the
+// tip's to at least kStifferTipMm2), at most kStifferSolves times, each
+// held to the tolerance again, from two starts: its own result, and the
+// start the first solve had. From a rough result
 // the stiffer solve can stay in its valley or roughen further (seed 199:
 // 3.7 -> 34 x the flank path's peak d2 from its result, 2.5 x from the
 // first start; seed 130's from its result was refused); where both are
