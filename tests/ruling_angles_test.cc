@@ -29,37 +29,56 @@ TEST(RulingAnglesTest, TheRulingsAnglesOnTheStartsBranchAndWinding) {
       {29 * kDeg, 2 * M_PI - 0.05},    // branch 0, a turn of C on
       {-30.5 * kDeg, M_PI + 0.02},     // branch 1
   };
-  const auto angles = RulingAngles(strip, {0.2, 0.5, 0.8}, {false, false, false}, start, 12);
+  const auto angles = RulingAngles(strip, {0.2, 0.5, 0.8}, {false, false, false}, start, 12, true);
   ASSERT_EQ(angles.size(), 3u);
-  for (const auto& a : angles) ASSERT_TRUE(a.has_value());
-  EXPECT_NEAR((*angles[0])[0], 30 * kDeg, 1e-12);
-  EXPECT_NEAR((*angles[0])[1], 0.0, 1e-12);
-  EXPECT_NEAR((*angles[1])[0], 30 * kDeg, 1e-12);
-  EXPECT_NEAR((*angles[1])[1], 2 * M_PI, 1e-12);
-  EXPECT_NEAR((*angles[2])[0], -30 * kDeg, 1e-12);
-  EXPECT_NEAR((*angles[2])[1], M_PI, 1e-12);
+  for (const RulingReference& a : angles) ASSERT_TRUE(a.a.has_value() && a.c.has_value());
+  EXPECT_NEAR(*angles[0].a, 30 * kDeg, 1e-12);
+  EXPECT_NEAR(*angles[0].c, 0.0, 1e-12);
+  EXPECT_NEAR(*angles[1].a, 30 * kDeg, 1e-12);
+  EXPECT_NEAR(*angles[1].c, 2 * M_PI, 1e-12);
+  EXPECT_NEAR(*angles[2].a, -30 * kDeg, 1e-12);
+  EXPECT_NEAR(*angles[2].c, M_PI, 1e-12);
   // Each is the ruling's direction itself.
-  for (const auto& a : angles) {
-    EXPECT_NEAR((AnglesToAxis((*a)[0], (*a)[1]) - Eigen::Vector3d(0, 0.5, std::sqrt(0.75))).norm(),
-                0.0, 1e-12);
+  for (const RulingReference& a : angles) {
+    EXPECT_NEAR((AnglesToAxis(*a.a, *a.c) - Eigen::Vector3d(0, 0.5, std::sqrt(0.75))).norm(), 0.0,
+                1e-12);
   }
 }
 
 TEST(RulingAnglesTest, NoneBeyondTheEndsNearThePoleOrOutsideTheCone) {
   const RuledSurface strip = LeaningStrip(30);
   const std::vector<Eigen::Vector2d> start = {{30 * kDeg, 0.0}, {30 * kDeg, 0.0}, {45 * kDeg, 0.0}};
-  const auto angles = RulingAngles(strip, {0.0, 0.5, 0.5}, {true, false, false}, start, 12);
-  EXPECT_FALSE(angles[0].has_value());  // a lead pose beyond the ends
-  EXPECT_TRUE(angles[1].has_value());
-  EXPECT_FALSE(angles[2].has_value());  // its start axis 15 deg from the ruling
-  // A ruling 10 deg from the pole: C would turn as 1 / sin A.
-  const RuledSurface steep = LeaningStrip(kRulingAnglesPoleDeg - 5);
-  EXPECT_FALSE(RulingAngles(steep, {0.5}, {false}, {{10 * kDeg, 0.0}}, 12)[0].has_value());
+  const auto angles = RulingAngles(strip, {0.0, 0.5, 0.5}, {true, false, false}, start, 12, true);
+  EXPECT_FALSE(angles[0].a || angles[0].c);  // a lead pose beyond the ends
+  EXPECT_TRUE(angles[1].a && angles[1].c);
+  EXPECT_FALSE(angles[2].a || angles[2].c);  // its start axis 15 deg from the ruling
   // The ruling's sense does not matter: a start axis pointing down the
   // ruling gets the reversed ruling's angles.
-  const auto down = RulingAngles(strip, {0.5}, {false}, {{150 * kDeg, M_PI}}, 12);
-  ASSERT_TRUE(down[0].has_value());
-  EXPECT_NEAR((*down[0])[0], 150 * kDeg, 1e-12);
+  const auto down = RulingAngles(strip, {0.5}, {false}, {{150 * kDeg, M_PI}}, 12, true);
+  ASSERT_TRUE(down[0].a.has_value());
+  EXPECT_NEAR(*down[0].a, 150 * kDeg, 1e-12);
+}
+
+TEST(RulingAnglesTest, NearThePoleAOnlyWhereAskedAndClearOfThePole) {
+  // A ruling 10 deg from the pole: C would turn as 1 / sin A and has no
+  // reference; A has one when asked for, on either branch, where the start
+  // axis lies less than half those 10 deg from the ruling (here 3.4 deg:
+  // 0.5 deg nearer the pole and 20 deg of C round it).
+  const RuledSurface steep = LeaningStrip(kRulingAnglesPoleDeg - 5);
+  const std::vector<Eigen::Vector2d> start = {{9.5 * kDeg, 20 * kDeg},
+                                              {-9.5 * kDeg, M_PI + 20 * kDeg}};
+  for (const RulingReference& r : RulingAngles(steep, {0.5, 0.5}, {false, false}, start, 12, false)) {
+    EXPECT_FALSE(r.a || r.c);
+  }
+  const auto near = RulingAngles(steep, {0.5, 0.5}, {false, false}, start, 12, true);
+  EXPECT_FALSE(near[0].c || near[1].c);
+  ASSERT_TRUE(near[0].a && near[1].a);
+  EXPECT_NEAR(*near[0].a, 10 * kDeg, 1e-12);
+  EXPECT_NEAR(*near[1].a, -10 * kDeg, 1e-12);
+  // A start axis 6 deg from the ruling (16 deg from the pole) is more than
+  // half the ruling's 10 deg from it: its A would not follow the ruling's.
+  const auto far = RulingAngles(steep, {0.5}, {false}, {{16 * kDeg, 0.0}}, 12, true);
+  EXPECT_FALSE(far[0].a || far[0].c);
 }
 
 }  // namespace

@@ -64,6 +64,24 @@ TEST(SmoothnessCostTest, DifferentiatesTheDepartureFromAReference) {
   EXPECT_NEAR(r[kPoseTip], 6.0, 1e-12);
 }
 
+TEST(SmoothnessCostTest, AAndCWeighApart) {
+  // A and C on the same quadratic (d2 = 2): each residual scales with the
+  // square root of its own weight (h = 1, L = 10: sqrt(w / 10) * 2).
+  const std::array<double, 3> s = {0.0, 1.0, 2.0};
+  std::array<std::array<double, 5>, 3> p;
+  for (int j = 0; j < 3; ++j) {
+    p[j] = PoseAt(s[j]);
+    p[j][kPoseA] = p[j][kPoseC] = s[j] * s[j];
+  }
+  std::unique_ptr<ceres::CostFunction> cost(
+      SmoothnessCost<2>::Create(s, 10.0, std::array<double, 2>{1000.0, 10.0}, 0.0));
+  double r[5];
+  const double* params[] = {p[0].data(), p[1].data(), p[2].data()};
+  ASSERT_TRUE(cost->Evaluate(params, r, nullptr));
+  EXPECT_NEAR(r[kPoseA], 20.0, 1e-9);
+  EXPECT_NEAR(r[kPoseC], 2.0, 1e-9);
+}
+
 TEST(SmoothnessCostTest, JacobiansMatchNumericDifferences) {
   std::array<std::array<double, 5>, 4> p = {PoseAt(0.1), PoseAt(1.0), PoseAt(2.2), PoseAt(3.0)};
   testing::ExpectJacobiansMatchNumeric(

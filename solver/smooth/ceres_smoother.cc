@@ -629,15 +629,28 @@ Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& 
 }
 
 // The ruling angles (solver/smooth/ruling_angles.h) of the poses
-// first..first+kCount-1, false when one of them has none.
+// first..first+kCount-1 into *out, and for A and for C whether every one of
+// them has it (where not, that angle's reference is left 0).
 template <int kCount>
-bool RulingWindow(const std::vector<std::optional<Eigen::Vector2d>>& angles, size_t first,
-                  std::array<std::array<double, 2>, kCount>* out) {
+std::array<bool, 2> RulingWindow(const std::vector<RulingReference>& angles, size_t first,
+                                 std::array<std::array<double, 2>, kCount>* out) {
+  std::array<bool, 2> all = {true, true};
   for (int j = 0; j < kCount; ++j) {
-    if (!angles[first + j]) return false;
-    (*out)[j] = {(*angles[first + j])[0], (*angles[first + j])[1]};
+    const RulingReference& r = angles[first + j];
+    all[0] = all[0] && r.a.has_value();
+    all[1] = all[1] && r.c.has_value();
   }
-  return true;
+  for (int j = 0; j < kCount; ++j) {
+    const RulingReference& r = angles[first + j];
+    (*out)[j] = {all[0] ? *r.a : 0.0, all[1] ? *r.c : 0.0};
+  }
+  return all;
+}
+
+// The angle weights of a stencil: `w` times the departure factor for an
+// angle that has its reference, `w` for one that has not.
+std::array<double, 2> AngleWeights(double w, double factor, const std::array<bool, 2>& referenced) {
+  return {referenced[0] ? factor * w : w, referenced[1] ? factor * w : w};
 }
 
 // The second and third derivatives of the joints and the tip along s.
@@ -646,13 +659,14 @@ void AddSmoothnessFamilies(const SmoothingInputs& in, const HighAccuracyOptions&
                            SmoothingState* state, ceres::Problem* problem) {
   const ToolPath& path = *in.input;
   const double factor = o.ruling_departure_factor;
-  std::vector<std::optional<Eigen::Vector2d>> ruling(path.poses.size());
+  std::vector<RulingReference> ruling(path.poses.size());
   if (in.surface != nullptr && factor > 0) {
     std::vector<Eigen::Vector2d> start(path.poses.size());
     for (size_t i = 0; i < start.size(); ++i) {
       start[i] = {state->poses[i][kPoseA], state->poses[i][kPoseC]};
     }
-    ruling = RulingAngles(*in.surface, state->u, state->beyond_ends, start, o.axis_cone_deg);
+    ruling = RulingAngles(*in.surface, state->u, state->beyond_ends, start, o.axis_cone_deg,
+                          o.ruling_a_near_pole);
   }
   // A family whose weights are all zero adds nothing but work: its zero
   // Jacobians still go through the linear algebra (more than half the
@@ -660,23 +674,19 @@ void AddSmoothnessFamilies(const SmoothingInputs& in, const HighAccuracyOptions&
   if (o.w_second > 0 || o.w_tip_second > 0) {
     AddStencils<2>(path, free_pose, BreaksSmoothness, state, problem, "second", [&](size_t i) {
       SmoothnessCost<2>::Reference r;
-      if (RulingWindow<3>(ruling, i, &r)) {
-        return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm,
-                                         factor * o.w_second, o.w_tip_second, r);
-      }
-      return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm, o.w_second,
-                                       o.w_tip_second);
+      const std::array<bool, 2> referenced = RulingWindow<3>(ruling, i, &r);
+      return SmoothnessCost<2>::Create(Window<3>(state->s_mm, i), length_mm,
+                                       AngleWeights(o.w_second, factor, referenced),
+                                       o.w_tip_second, r);
     });
   }
   if (o.w_third > 0 || o.w_tip_third > 0) {
     AddStencils<3>(path, free_pose, BreaksSmoothness, state, problem, "third", [&](size_t i) {
       SmoothnessCost<3>::Reference r;
-      if (RulingWindow<4>(ruling, i, &r)) {
-        return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm,
-                                         factor * o.w_third, o.w_tip_third, r);
-      }
-      return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm, o.w_third,
-                                       o.w_tip_third);
+      const std::array<bool, 2> referenced = RulingWindow<4>(ruling, i, &r);
+      return SmoothnessCost<3>::Create(Window<4>(state->s_mm, i), length_mm,
+                                       AngleWeights(o.w_third, factor, referenced),
+                                       o.w_tip_third, r);
     });
   }
 }

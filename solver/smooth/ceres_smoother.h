@@ -53,6 +53,12 @@ struct HighAccuracyOptions {
   // angles without pulling the axis off the surface. 0 differentiates the
   // angles themselves everywhere. >= 0.
   double ruling_departure_factor = 100.0;
+  // Near the pole (within kRulingAnglesPoleDeg, solver/smooth/ruling_angles.h)
+  // A's departure from its ruling's A is differentiated too, where the
+  // ruling clears the pole by kRulingAPoleClearance. Off in a first solve:
+  // a run held to the tolerance by it can miss it (random seed 120 then
+  // goes back as programmed); the pipeline's stiffer solves set it.
+  bool ruling_a_near_pole = false;
   // Weights of the second/third derivative of the tip, mm^2 and mm^4.
   double w_tip_second = 1e-2;
   double w_tip_third = 0.0;

@@ -1,5 +1,6 @@
 #include "solver/smooth/ruling_angles.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glog/logging.h>
@@ -8,22 +9,25 @@
 
 namespace tpopt {
 
-std::vector<std::optional<Eigen::Vector2d>> RulingAngles(const RuledSurface& surface,
-                                                         const std::vector<double>& u,
-                                                         const std::vector<bool>& beyond_ends,
-                                                         const std::vector<Eigen::Vector2d>& start_ac,
-                                                         double cone_deg) {
+std::vector<RulingReference> RulingAngles(const RuledSurface& surface, const std::vector<double>& u,
+                                          const std::vector<bool>& beyond_ends,
+                                          const std::vector<Eigen::Vector2d>& start_ac,
+                                          double cone_deg, bool a_near_pole) {
   CHECK(u.size() == beyond_ends.size() && u.size() == start_ac.size());
   constexpr double kDeg = M_PI / 180.0;
-  std::vector<std::optional<Eigen::Vector2d>> angles(u.size());
+  std::vector<RulingReference> angles(u.size());
   for (size_t i = 0; i < u.size(); ++i) {
     if (beyond_ends[i]) continue;
     const Eigen::Vector2d& start = start_ac[i];
     const Eigen::Vector3d start_axis = AnglesToAxis(start[0], start[1]);
     Eigen::Vector3d ruling = surface.Dv(u[i]).normalized();
     if (ruling.dot(start_axis) < 0) ruling = -ruling;
-    if (std::abs(ruling.z()) > std::cos(kRulingAnglesPoleDeg * kDeg) ||
-        ruling.dot(start_axis) < std::cos(cone_deg * kDeg)) {
+    if (ruling.dot(start_axis) < std::cos(cone_deg * kDeg)) continue;
+    const double ruling_from_pole = std::acos(std::min(1.0, std::abs(ruling.z())));
+    const bool near_pole = ruling_from_pole < kRulingAnglesPoleDeg * kDeg;
+    if (near_pole &&
+        !(a_near_pole && ruling_from_pole >= kRulingAPoleClearance *
+                                                 std::acos(std::min(1.0, ruling.dot(start_axis))))) {
       continue;
     }
     double nearest = INFINITY;
@@ -32,7 +36,8 @@ std::vector<std::optional<Eigen::Vector2d>> RulingAngles(const RuledSurface& sur
       const double distance = std::abs(branch[0] - start[0]) + std::abs(dc);
       if (distance < nearest) {
         nearest = distance;
-        angles[i] = Eigen::Vector2d(branch[0], start[1] + dc);
+        angles[i].a = branch[0];
+        if (!near_pole) angles[i].c = start[1] + dc;
       }
     }
   }

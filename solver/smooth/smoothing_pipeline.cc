@@ -677,7 +677,10 @@ bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vect
 // accelerate more than settings.stiffer_above_flank_d2 times as hard as the
 // surface's own flank path's has kept the CAM's noise. Either way the solve is
 // repeated with the smoothness weights raised kStifferFactor-fold (the
-// tip's to at least kStifferTipMm2), at most kStifferSolves times, each
+// tip's to at least kStifferTipMm2) and A held to its ruling's A near the
+// pole too (ruling_a_near_pole: there a noisy A's ripple costs the default
+// weights next to nothing; README, "Random cases", stop 36), at most
+// kStifferSolves times, each
 // held to the tolerance again, from two starts: its own result, and the
 // start the first solve had. From a rough result
 // the stiffer solve can stay in its valley or roughen further (seed 199:
@@ -722,6 +725,7 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
     stiffer.w_second *= kStifferFactor;
     stiffer.w_third *= kStifferFactor;
     stiffer.w_tip_second = std::max(stiffer.w_tip_second * kStifferFactor, kStifferTipMm2);
+    stiffer.ruling_a_near_pole = true;
     run.Stage("high_accuracy solve with stiffer smoothing (" + std::to_string(k + 1) + ")");
     // Asked for by the flank path's peaks alone, the stiffer solve must
     // also leave the surface little farther than the solve before it: the

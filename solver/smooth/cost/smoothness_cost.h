@@ -11,7 +11,8 @@
 //   r_tip   = sqrt(w_tip h / L)   * sum_j c_j p_j               [mm/mm^k]
 // With reference angles (A, C)_ref per pose (the rulings' own,
 // solver/smooth/ruling_angles.h), r_angle differentiates (A, C) - (A, C)_ref
-// instead. Neither the point density nor the path length changes what a
+// instead. A and C may weigh differently (w_angle = (w_A, w_C)): near the
+// pole A has its reference and C has none. Neither the point density nor the path length changes what a
 // weight means. Units: w_angle in mm^(2k)/rad^2, w_tip in mm^(2k-2), so that E_k is
 // dimensionless like the deviation cost. The cost is linear in the poses.
 #ifndef TPOPT_SOLVER_SMOOTHNESS_COST_H_
@@ -39,20 +40,27 @@ class SmoothnessCost : public PoseStencil<SmoothnessCost<kOrder>> {
 
   // s_mm: arc-length abscissae of the k + 1 poses; path_length_mm: L.
   SmoothnessCost(const std::array<double, kOrder + 1>& s_mm, double path_length_mm,
-                 double w_angle, double w_tip, const Reference& reference = {})
+                 const std::array<double, 2>& w_angle, double w_tip,
+                 const Reference& reference = {})
       : weights_(DerivativeWeights<kOrder>(s_mm)) {
     reference_sum_ = {0.0, 0.0};
     for (int j = 0; j <= kOrder; ++j) {
       for (int d = 0; d < 2; ++d) reference_sum_[d] += weights_[j] * reference[j][d];
     }
     const double h = (s_mm[kOrder] - s_mm[0]) / kOrder;
-    angle_scale_ = std::sqrt(w_angle * h / path_length_mm);
+    for (int d = 0; d < 2; ++d) angle_scale_[d] = std::sqrt(w_angle[d] * h / path_length_mm);
     tip_scale_ = std::sqrt(w_tip * h / path_length_mm);
   }
 
   static ceres::CostFunction* Create(const std::array<double, kOrder + 1>& s_mm,
                                      double path_length_mm, double w_angle, double w_tip,
                                      const Reference& reference = {}) {
+    return Create(s_mm, path_length_mm, {w_angle, w_angle}, w_tip, reference);
+  }
+
+  static ceres::CostFunction* Create(const std::array<double, kOrder + 1>& s_mm,
+                                     double path_length_mm, const std::array<double, 2>& w_angle,
+                                     double w_tip, const Reference& reference = {}) {
     auto* functor = new SmoothnessCost(s_mm, path_length_mm, w_angle, w_tip, reference);
     if constexpr (kOrder == 2) {
       return new ceres::AutoDiffCostFunction<SmoothnessCost, kPoseSize, kPoseSize, kPoseSize,
@@ -69,7 +77,7 @@ class SmoothnessCost : public PoseStencil<SmoothnessCost<kOrder>> {
     for (int d = 0; d < kPoseSize; ++d) {
       T sum(0.0);
       for (int j = 0; j <= kOrder; ++j) sum += weights_[j] * poses[j][d];
-      r[d] = d < kPoseTip ? angle_scale_ * (sum - reference_sum_[d]) : tip_scale_ * sum;
+      r[d] = d < kPoseTip ? angle_scale_[d] * (sum - reference_sum_[d]) : tip_scale_ * sum;
     }
     return true;
   }
@@ -77,7 +85,7 @@ class SmoothnessCost : public PoseStencil<SmoothnessCost<kOrder>> {
  private:
   std::array<double, kOrder + 1> weights_;
   std::array<double, 2> reference_sum_;
-  double angle_scale_ = 0.0;
+  std::array<double, 2> angle_scale_ = {0.0, 0.0};
   double tip_scale_ = 0.0;
 };
 
