@@ -148,7 +148,7 @@ DEFINE_double(pole_crossing_deg, 4.0,
 DEFINE_bool(keep_runs_no_worse, true,
             "smooth: put back as programmed every cutting run that smoothing made worse on peak "
             "d2A/ds2 or d2C/ds2 (false: write what the method made).");
-DEFINE_double(stiffer_above_flank_d2, 2.0,
+DEFINE_double(stiffer_above_flank_d2, 1.8,
               "smooth: high_accuracy with a surface solves again with stiffer smoothing where "
               "its peak d2A/ds2 or d2C/ds2 is above this many times the surface's own flank "
               "(SPO) path's (0 = never).");
