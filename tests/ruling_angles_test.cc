@@ -45,7 +45,7 @@ TEST(RulingAnglesTest, TheRulingsAnglesOnTheStartsBranchAndWinding) {
   }
 }
 
-TEST(RulingAnglesTest, NoneBeyondTheEndsNearThePoleOrOutsideTheCone) {
+TEST(RulingAnglesTest, NoneBeyondTheEndsOrOutsideTheCone) {
   const RuledSurface strip = LeaningStrip(30);
   const std::vector<Eigen::Vector2d> start = {{30 * kDeg, 0.0}, {30 * kDeg, 0.0}, {45 * kDeg, 0.0}};
   const auto angles = RulingAngles(strip, {0.0, 0.5, 0.5}, {true, false, false}, start, 12, true);

@@ -22,14 +22,13 @@ std::vector<RulingReference> RulingAngles(const RuledSurface& surface, const std
     const Eigen::Vector3d start_axis = AnglesToAxis(start[0], start[1]);
     Eigen::Vector3d ruling = surface.Dv(u[i]).normalized();
     if (ruling.dot(start_axis) < 0) ruling = -ruling;
-    if (ruling.dot(start_axis) < std::cos(cone_deg * kDeg)) continue;
+    const double axis_from_ruling = std::acos(std::min(1.0, ruling.dot(start_axis)));
+    if (axis_from_ruling > cone_deg * kDeg) continue;
     const double ruling_from_pole = std::acos(std::min(1.0, std::abs(ruling.z())));
     const bool near_pole = ruling_from_pole < kRulingAnglesPoleDeg * kDeg;
-    if (near_pole &&
-        !(a_near_pole && ruling_from_pole >= kRulingAPoleClearance *
-                                                 std::acos(std::min(1.0, ruling.dot(start_axis))))) {
-      continue;
-    }
+    const bool a_clear_of_pole =
+        a_near_pole && ruling_from_pole >= kRulingAPoleClearance * axis_from_ruling;
+    if (near_pole && !a_clear_of_pole) continue;
     double nearest = INFINITY;
     for (const Eigen::Vector2d& branch : AxisToAngles(ruling)) {
       const double dc = std::remainder(branch[1] - start[1], 2 * M_PI);

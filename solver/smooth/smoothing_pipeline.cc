@@ -680,9 +680,8 @@ bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vect
 // tip's to at least kStifferTipMm2) and A held to its ruling's A near the
 // pole too (ruling_a_near_pole: there a noisy A's ripple costs the default
 // weights next to nothing; README, "Random cases", stop 36), at most
-// kStifferSolves times, each
-// held to the tolerance again, from two starts: its own result, and the
-// start the first solve had. From a rough result
+// kStifferSolves times, each held to the tolerance again, from two starts:
+// its own result, and the start the first solve had. From a rough result
 // the stiffer solve can stay in its valley or roughen further (seed 199:
 // 3.7 -> 34 x the flank path's peak d2 from its result, 2.5 x from the
 // first start; seed 130's from its result was refused); where both are
