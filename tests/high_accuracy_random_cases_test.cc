@@ -121,11 +121,24 @@ void MakeAndSmooth(unsigned seed, RandomCase* c, SmoothingResult* result,
   ASSERT_TRUE(s.ok()) << s.message() << "\n" << c->description;
 }
 
-class HighAccuracyRandomCasesTest : public ::testing::TestWithParam<unsigned> {};
+// What the peak d2A/ds2 and d2C/ds2 of the output are held to.
+enum class D2Bound {
+  // Issue 16's target: 2 x the clean SPO path's.
+  kTwiceSpo,
+  // The larger of that and the clean DPO path's own: for cases where the
+  // accurate reference is itself beyond 2 x SPO (it passes the A = 0 pole
+  // at a distance the SPO path's axis does not keep), so that the two
+  // targets pull apart.
+  kTwiceSpoOrDpo,
+};
 
-TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
+// Issue 16's targets on random case `seed`: success, max |dev| <= 1.0 x
+// the clean DPO path's by the brute-force judge on the input's covered
+// range, both peak d2 within `d2_bound`, and every axis within the cone
+// round its input's.
+void ExpectIssueTargets(unsigned seed, D2Bound d2_bound) {
   RandomCase c;
-  ASSERT_TRUE(MakeCase(GetParam(), &c));
+  ASSERT_TRUE(MakeCase(seed, &c));
   SCOPED_TRACE(c.description);
   if (!c.fits_machine) GTEST_SKIP() << "the input does not fit the machine: " << c.fit_note;
   SmoothingResult result;
@@ -140,9 +153,20 @@ TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
                                   << " mm";
 
   const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
+  const std::array<double, 2> dpo = PeakSecond(c.machine, c.clean_dpo);
   const std::array<double, 2> out = PeakSecond(c.machine, result.output);
-  EXPECT_LE(out[0], 2.0 * spo[0]) << "peak d2A/ds2 " << out[0] << " rad/mm^2, SPO " << spo[0];
-  EXPECT_LE(out[1], 2.0 * spo[1]) << "peak d2C/ds2 " << out[1] << " rad/mm^2, SPO " << spo[1];
+  if (d2_bound == D2Bound::kTwiceSpoOrDpo) {
+    // Else the seed belongs with the strict target.
+    EXPECT_TRUE(dpo[0] > 2.0 * spo[0] || dpo[1] > 2.0 * spo[1])
+        << "the clean DPO path's peak d2A " << dpo[0] << ", d2C " << dpo[1]
+        << " rad/mm^2 are within 2 x SPO's " << spo[0] << ", " << spo[1];
+  }
+  for (int k = 0; k < 2; ++k) {
+    const double bound =
+        d2_bound == D2Bound::kTwiceSpo ? 2.0 * spo[k] : std::max(2.0 * spo[k], dpo[k]);
+    EXPECT_LE(out[k], bound) << "peak d2" << (k == 0 ? "A" : "C") << "/ds2 " << out[k]
+                             << " rad/mm^2, SPO " << spo[k] << ", DPO " << dpo[k];
+  }
 
   // Each output axis against the input axis of the nearest contact u.
   const std::vector<double> u_in = ProjectPathOntoRail(c.surface.rail(0), c.cam_path);
@@ -164,6 +188,19 @@ TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
   }
   EXPECT_LE(worst_deg, kConeDeg) << "pose " << worst_pose << " axis " << worst_deg
                                  << " deg from its input's";
+}
+
+class HighAccuracyRandomCasesTest : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
+  ExpectIssueTargets(GetParam(), D2Bound::kTwiceSpo);
+}
+
+// Cases whose clean DPO path is itself beyond 2 x the SPO path's peak d2.
+class HighAccuracyRandomCasesRoughReferenceTest : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(HighAccuracyRandomCasesRoughReferenceTest, HoldsTheTargetsWithD2NoWorseThanTheDpoPath) {
+  ExpectIssueTargets(GetParam(), D2Bound::kTwiceSpoOrDpo);
 }
 
 // Where every solve leaves grid points beyond the tolerance that the input
@@ -518,12 +555,23 @@ INSTANTIATE_TEST_SUITE_P(StifferTriggerMargin, HighAccuracyRandomCasesTest,
 // starts with the tip's d2 at 10 mm^2 or more, guard rulings at 0.15 mm at
 // the rulings' ends, peak-deviation rounds); run them with
 // --gtest_also_run_disabled_tests. What fails, measured, as a multiple of
-// the clean SPO path's peak d2 (the target: 2): seed 1, d2A 6.3 (6.5 at
-// stop 34, 24 at stop 30), its end near the pole, where the rulings give
-// no reference. Seed 22 (d2C 3.4 at stop 34) holds since stop 35's
-// stiffer tip weight and is in Passing.
+// the clean SPO path's peak d2 (the target: 2): seed 1, d2A 5.4 (6.3 at
+// stop 35, 6.5 at stop 34, 24 at stop 30), its end near the pole, where the
+// rulings give no reference; the clean DPO path's own is 7.1 x there, and
+// the seed holds in RoughReference below. Seed 22 (d2C 3.4 at stop 34)
+// holds since stop 35's stiffer tip weight and is in Passing.
 INSTANTIATE_TEST_SUITE_P(DISABLED_FailingUntilTheSolverFixes, HighAccuracyRandomCasesTest,
                          ::testing::Values(1u));
+
+// Seeds whose clean DPO path is itself beyond 2 x the SPO path's peak d2A
+// or d2C, held to max |dev| <= 1.0 x the DPO path's and each peak d2 within
+// the larger of 2 x SPO and the DPO path's own (stop 37, README "Random
+// cases"; measured by the benchmark: seed 1 d2A 5.4 x SPO, DPO 7.1 x; 55
+// d2A 3.4 x, DPO 5.8 x; 64 d2C 2.1 x, DPO 3.8 x; 105 d2C 3.3 x, DPO 8.5 x;
+// 183 d2A 2.8 x, DPO 3.2 x; 192 d2C 2.6 x, DPO 26 x). Seed 1 stays above
+// for the strict target.
+INSTANTIATE_TEST_SUITE_P(RoughReference, HighAccuracyRandomCasesRoughReferenceTest,
+                         ::testing::Values(1u, 55u, 64u, 105u, 183u, 192u));
 
 }  // namespace
 }  // namespace tpopt
