@@ -313,7 +313,9 @@ int Main(int argc, char** argv) {
       const bool d2 = row.a_ratio <= kD2Target && row.c_ratio <= kD2Target;
       d2_both += d2;
       all_three += d2 && row.dev_ratio <= 1.0;
-      all_three_dpo += row.dev_ratio <= 1.0 &&
+      // (An infinite ratio, an SPO path that does not turn, fails both.)
+      all_three_dpo += row.dev_ratio <= 1.0 && std::isfinite(row.a_ratio) &&
+                       std::isfinite(row.c_ratio) &&
                        row.a_ratio <= std::max(kD2Target, row.dpo_a_ratio) &&
                        row.c_ratio <= std::max(kD2Target, row.dpo_c_ratio);
     }

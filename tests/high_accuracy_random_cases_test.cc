@@ -4,7 +4,9 @@
 //  - success wherever the input fits the machine;
 //  - max |dev| <= 1.0 x the clean DPO path's on the input's covered range,
 //    both by the brute-force evaluator;
-//  - peak d2A/ds2 and d2C/ds2 <= 2 x the clean SPO path's;
+//  - peak d2A/ds2 and d2C/ds2 <= 2 x the clean SPO path's (in
+//    RoughReference, whose clean DPO path is itself beyond that, within the
+//    larger of it and the DPO path's own);
 //  - every axis within its cone round the input's axis.
 #include <cmath>
 #include <string>
