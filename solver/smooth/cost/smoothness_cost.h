@@ -13,8 +13,9 @@
 // solver/smooth/ruling_angles.h), r_angle differentiates (A, C) - (A, C)_ref
 // instead. A and C may weigh differently (w_angle = (w_A, w_C)): near the
 // pole A may have its reference where C has none. Neither the point density
-// nor the path length changes what a weight means. Units: w_angle in mm^(2k)/rad^2, w_tip in mm^(2k-2), so that E_k is
-// dimensionless like the deviation cost. The cost is linear in the poses.
+// nor the path length changes what a weight means. Units: w_angle in
+// mm^(2k)/rad^2, w_tip in mm^(2k-2), so that E_k is dimensionless like the
+// deviation cost. The cost is linear in the poses.
 #ifndef TPOPT_SOLVER_SMOOTHNESS_COST_H_
 #define TPOPT_SOLVER_SMOOTHNESS_COST_H_
 
