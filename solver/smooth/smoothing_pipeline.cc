@@ -147,10 +147,17 @@ ToolPath ComposeRuns(const ToolPath& input, const ToolPath& output, const std::v
 struct NoWorseOn {
   bool d2 = true;       // peak d2A/ds2 and d2C/ds2
   bool limits = false;  // axis-limit violations
+  // The runs (one flag a run) that may be rougher than the input's up to
+  // `inaccurate_d2_bound` (peak d2A, d2C): those whose programmed moves
+  // leave the surface beyond the tolerance, so that putting them back would
+  // trade a smooth enough accurate run for an inaccurate one.
+  std::vector<bool> inaccurate_runs;
+  std::array<double, 2> inaccurate_d2_bound = {0.0, 0.0};
 };
 
 // Puts back as programmed every run of `output` whose peak d2A/ds2 or
-// d2C/ds2 (with `on.d2`) or limit violations (with `on.limits`) exceed
+// d2C/ds2 (with `on.d2`; a run of on.inaccurate_runs only where also above
+// on.inaccurate_d2_bound) or limit violations (with `on.limits`) exceed
 // those of the same run of `input`, so that the program as a whole is no
 // worse on either; `back` (one flag a run) says which, and may come in with
 // runs already put back. A run's first sample also sees the last pose of the
@@ -181,8 +188,13 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
   for (bool changed = true; changed;) {
     changed = false;
     for (size_t r = 0; r < runs; ++r) {
-      const bool worse_d2 = after[r].peak_d2[0] > before[r].peak_d2[0] + kSlack ||
-                            after[r].peak_d2[1] > before[r].peak_d2[1] + kSlack;
+      const bool inaccurate = r < on.inaccurate_runs.size() && on.inaccurate_runs[r];
+      const auto rougher = [&](int k) {
+        const double bound = inaccurate ? std::max(before[r].peak_d2[k], on.inaccurate_d2_bound[k])
+                                        : before[r].peak_d2[k];
+        return after[r].peak_d2[k] > bound + kSlack;
+      };
+      const bool worse_d2 = rougher(0) || rougher(1);
       const bool worse_limits = after[r].limit_violations > before[r].limit_violations;
       if (!(on.d2 && worse_d2) && !(on.limits && worse_limits)) continue;
       if (!(*back)[r]) {
@@ -564,6 +576,9 @@ struct HeldSolve {
   std::string beyond_refusal;
   std::vector<bool> beyond_runs;
   std::vector<KeptRun> beyond_why;  // one a run, RunsReaching's
+  // What the solve's runs may not be worse than the input's on: the rule
+  // the stiffer solves and the peak rounds look ahead to.
+  NoWorseOn no_worse;
 };
 
 // One solve, then again with the points it left beyond the tolerance held,
@@ -662,13 +677,13 @@ double RoughnessOver(const SmoothingResult& result, const std::array<double, 2>&
   return ratio;
 }
 
-// The runs of `path` that KeepRunsNoWorse would put back; false where the
-// runs do not pair up with the input's.
-bool RunsWorseThanInput(const SmoothingRun& run, const ToolPath& path, std::vector<bool>* worse) {
+// The runs of `path` that KeepRunsNoWorse (on `on`) would put back; false
+// where the runs do not pair up with the input's.
+bool RunsWorseThanInput(const SmoothingRun& run, const NoWorseOn& on, const ToolPath& path,
+                        std::vector<bool>* worse) {
   ToolPath composed = path;
   return KeepRunsNoWorse(*run.job.input, *run.job.machine,
-                         run.settings.feed.default_feed_mm_per_min, NoWorseOn(), &composed,
-                         worse);
+                         run.settings.feed.default_feed_mm_per_min, on, &composed, worse);
 }
 
 // A run the solve made worse on peak d2 than the input's would go back as
@@ -714,7 +729,7 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
                   settings.resample_step_mm <= 0 && held->beyond_runs.empty();
        ++k) {
     std::vector<bool> worse_runs;
-    if (!RunsWorseThanInput(run, result->output, &worse_runs)) break;
+    if (!RunsWorseThanInput(run, held->no_worse, result->output, &worse_runs)) break;
     const bool worse = std::any_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; });
     const double roughness = RoughnessOver(*result, rough_flank);
     if (!worse && !(roughness > rough_factor)) break;
@@ -838,7 +853,7 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
     // the surface has no peak worth a solve.
     if (!(bound > 1e-3 * options.tolerance_mm)) return;
     std::vector<bool> worse_before;
-    if (!RunsWorseThanInput(run, kept.output, &worse_before)) return;
+    if (!RunsWorseThanInput(run, held->no_worse, kept.output, &worse_before)) return;
     const DeviationReport& out = *kept.output_at_input_feed.deviation;
     GrowActiveSet(out, {}, PeakRoundPoints(out, bound), &held->active, bound);
     start = kept.output;
@@ -858,7 +873,7 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
           }
         }
         std::vector<bool> worse;
-        bool made_worse = !RunsWorseThanInput(run, result->output, &worse) ||
+        bool made_worse = !RunsWorseThanInput(run, held->no_worse, result->output, &worse) ||
                           worse.size() != worse_before.size();
         for (size_t r = 0; !made_worse && r < worse.size(); ++r) {
           made_worse = worse[r] && !worse_before[r];
@@ -876,6 +891,19 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
     }
     ++result->peak_deviation_rounds;
   }
+}
+
+// One flag per cutting run of the input (RunStarts): whether its moves
+// leave a grid point of the surface farther than `tolerance_mm`
+// (RunsReaching; the input's own deviation, on the judged grid).
+std::vector<bool> RunsBeyondTolerance(const SmoothingRun& run, double tolerance_mm) {
+  const DeviationReport& in = *run.result->input_metrics.deviation;
+  std::vector<size_t> beyond;
+  for (size_t k = 0; k < in.deviation_mm.size(); ++k) {
+    if (std::abs(in.deviation_mm[k]) > tolerance_mm) beyond.push_back(k);
+  }
+  std::vector<KeptRun> unused;
+  return RunsReaching(*run.job.surface, *run.job.input, in, in, beyond, tolerance_mm, &unused);
 }
 
 // High-accuracy mode after the spline method: the start, the solve held to
@@ -952,6 +980,16 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& stations,
   const std::array<double, 2> flank = job.surface != nullptr
                                           ? FlankPathPeaks(job)
                                           : std::array<double, 2>{INFINITY, INFINITY};
+  // Held to the tolerance, a smoothed run leaves no point farther than both
+  // the tolerance and the programmed run (tolerance_promise.h).
+  if (held.held_to_tolerance) {
+    held.no_worse.inaccurate_runs = RunsBeyondTolerance(run, options.tolerance_mm);
+    for (int k = 0; k < 2; ++k) {
+      // No flank path, no bound beyond the programmed run's own.
+      held.no_worse.inaccurate_d2_bound[k] =
+          std::isfinite(flank[k]) ? settings.stiffer_above_flank_d2 * flank[k] : 0.0;
+    }
+  }
   SolveStiffer(run, flank, &options, &held);
   LowerPeakDeviation(run, options, flank, &held);
   const bool held_to_tolerance = held.held_to_tolerance;
@@ -975,7 +1013,7 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& stations,
   // that break more limits than the input's go back as programmed, with
   // the d2 rule below (at worst the whole input, which is never worse
   // than itself); only what is still worse then is refused.
-  NoWorseOn no_worse;
+  NoWorseOn no_worse = held.no_worse;
   no_worse.d2 = settings.keep_runs_no_worse;
   no_worse.limits = worse_than_start();
   if (no_worse.d2 || no_worse.limits || !held.beyond_runs.empty()) {

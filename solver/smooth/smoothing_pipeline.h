@@ -89,7 +89,12 @@ struct SmoothingSettings {
   bool accept_over_tolerance = false;
   // Put back as programmed the cutting runs the method made worse on peak
   // d2A/ds2 or d2C/ds2 (SmoothingResult::runs_kept_as_input), so that
-  // neither mode returns a program worse on either.
+  // neither mode returns a program worse on either. High accuracy held to
+  // the tolerance (a surface, no accept_over_tolerance) keeps a run rougher
+  // than programmed where the programmed run leaves the surface beyond the
+  // tolerance and the smoothed one stays within stiffer_above_flank_d2
+  // times the flank path's peaks (below): put back, the run would be out of
+  // tolerance again.
   bool keep_runs_no_worse = true;
   // High accuracy with a surface, with keep_runs_no_worse: where the
   // result's peak d2A/ds2 or d2C/ds2 is above this many times that of the
