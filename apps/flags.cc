@@ -1,6 +1,5 @@
 #include "apps/flags.h"
 
-#include "model/machine/axis_metrics.h"
 #include "model/path/link_moves.h"
 #include "model/path/path_generator.h"
 #include "model/path/pencil_path.h"
@@ -10,11 +9,11 @@
 
 namespace {
 
-// A flag that sets an option defaults to the option's own default, so the
-// command line and the library cannot drift apart. (Defined before the
-// flags: a translation unit initialises in order.)
+// A flag that sets an option to the option's own default takes it from
+// the option, so the two cannot drift apart; the other literals below are
+// in other units (deg for rad, ms for s) or the command line's own choice.
+// (Defined before the flags: a translation unit initialises in order.)
 const tpopt::SmoothingSettings kSettings;
-const tpopt::MotionOptions kMotion;
 const tpopt::LinkMoveOptions kLinks;
 const tpopt::FlankPathOptions kFlankPath;
 const tpopt::PencilOptions kPencil;
@@ -81,7 +80,7 @@ DEFINE_double(distortion_center, kFlankPath.distortion_center, "generate: u at t
 DEFINE_double(distortion_width, kFlankPath.distortion_width, "generate: width in u of the distortion bump.");
 DEFINE_double(axis_noise_deg, kFlankPath.axis_noise_deg, "generate: standard deviation of random tool-axis noise, deg.");
 DEFINE_int32(noise_seed, 1, "generate: seed of the axis noise (results are deterministic).");
-DEFINE_double(feed, kMotion.default_feed_mm_per_min, "Programmed feed, mm/min (generate; default where a path has none).");
+DEFINE_double(feed, kSettings.motion.default_feed_mm_per_min, "Programmed feed, mm/min (generate; default where a path has none).");
 
 DEFINE_int32(samples_u, kSettings.deviation.samples_u, "Deviation grid: samples along u.");
 DEFINE_int32(samples_v, kSettings.deviation.samples_v, "Deviation grid: samples along each ruling (v).");
@@ -171,8 +170,10 @@ DEFINE_double(pole_crossing_deg, kSettings.spline.pole_crossing_deg,
 DEFINE_bool(keep_runs_no_worse, kSettings.keep_runs_no_worse,
             "smooth: put back as programmed every cutting run that smoothing made worse on peak "
             "d2A/ds2 or d2C/ds2 (false: write what the method made); high_accuracy with a "
-            "surface keeps a rougher run where the programmed one is beyond --tolerance_mm and "
-            "the smoothed one within --stiffer_above_flank_d2 times the flank path's peaks.");
+            "surface and without --accept_over_tolerance keeps a rougher run where the "
+            "programmed one leaves a surface point beyond --tolerance_mm and the smoothed one "
+            "stays within --stiffer_above_flank_d2 times the flank path's peaks (the report "
+            "lists them).");
 DEFINE_double(stiffer_above_flank_d2, kSettings.stiffer_above_flank_d2,
               "smooth: high_accuracy with a surface solves again with stiffer smoothing where "
               "its peak d2A/ds2 or d2C/ds2 is above this many times the surface's own flank "

@@ -138,6 +138,16 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
   report["runs_kept_as_input"] = result.runs_kept_as_input;
   report["runs_kept"] = nlohmann::json::array();
   for (const KeptRun& k : result.runs_kept) report["runs_kept"].push_back(KeptRunJson(k));
+  report["runs_rougher_than_programmed"] = nlohmann::json::array();
+  for (const RougherRun& k : result.runs_rougher) {
+    report["runs_rougher_than_programmed"].push_back(
+        {{"first_line", k.first_line},
+         {"last_line", k.last_line},
+         {"axis", k.axis},
+         {"input_peak_d2_deg_per_mm2", k.input_peak * kRadToDeg},
+         {"smoothed_peak_d2_deg_per_mm2", k.smoothed_peak * kRadToDeg},
+         {"input_worst_mm", k.input_worst_mm}});
+  }
   report["stiffer_solves"] = result.stiffer_solves;
   report["peak_deviation_rounds"] = result.peak_deviation_rounds;
   report["lead_poses_continued"] = result.lead_poses_continued;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "apps/commands.h"
 #include "apps/controller_run.h"
@@ -93,6 +94,15 @@ std::string DescribeKeptRun(const KeptRun& k) {
   return line;
 }
 
+// One line a run, the first kMaxRunLines of them (the report lists all).
+void PrintRunLines(const std::vector<std::string>& lines) {
+  constexpr size_t kMaxRunLines = 20;
+  for (size_t i = 0; i < lines.size() && i < kMaxRunLines; ++i) {
+    std::printf("    %s\n", lines[i].c_str());
+  }
+  if (lines.size() > kMaxRunLines) std::printf("    ... and %zu more\n", lines.size() - kMaxRunLines);
+}
+
 void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& result) {
   std::printf("%s%s", Summary("input ", result.input_metrics).c_str(),
               Summary("output", result.output_metrics).c_str());
@@ -120,15 +130,26 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
                 "d2C/ds2 higher (in high accuracy also: broke more axis limits, left "
                 "points beyond the tolerance, or every solve failed)\n",
                 result.runs_kept_as_input);
-    // Which, and why: one line a run (the first kMaxKeptLines).
-    constexpr int kMaxKeptLines = 20;
-    const int listed = std::min<int>(kMaxKeptLines, static_cast<int>(result.runs_kept.size()));
-    for (int i = 0; i < listed; ++i) {
-      std::printf("    %s\n", DescribeKeptRun(result.runs_kept[i]).c_str());
+    std::vector<std::string> lines;
+    for (const KeptRun& k : result.runs_kept) lines.push_back(DescribeKeptRun(k));
+    PrintRunLines(lines);
+  }
+  if (!result.runs_rougher.empty()) {
+    std::printf("  %d cutting runs rougher than programmed: each programmed run leaves the "
+                "surface beyond the tolerance, and the smoothed one stays within "
+                "--stiffer_above_flank_d2 times the surface's own flank path's peak d2\n",
+                static_cast<int>(result.runs_rougher.size()));
+    std::vector<std::string> lines;
+    for (const RougherRun& k : result.runs_rougher) {
+      char line[256];
+      std::snprintf(line, sizeof line,
+                    "lines %d-%d: peak d2%s/ds2 %.4g -> %.4g deg/mm^2 (input -> smoothed); "
+                    "programmed %.4g mm off the surface",
+                    k.first_line, k.last_line, k.axis.c_str(), k.input_peak * kRadToDeg,
+                    k.smoothed_peak * kRadToDeg, k.input_worst_mm);
+      lines.push_back(line);
     }
-    if (static_cast<int>(result.runs_kept.size()) > listed) {
-      std::printf("    ... and %d more\n", static_cast<int>(result.runs_kept.size()) - listed);
-    }
+    PrintRunLines(lines);
   }
   if (result.feed.moves_slowed > 0) {
     std::printf("  feed scheduled down on %d moves (lowest %.0f mm/min) to keep every limit\n",

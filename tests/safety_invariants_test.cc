@@ -320,8 +320,9 @@ TEST_F(ToleranceInvariantTest, PutsBackWhatCannotBeHeldUnlessAccepted) {
   }
 }
 
-// High accuracy never returns a program worse on peak d2A/ds2 or d2C/ds2
-// than its input, and puts runs back after its tolerance check without
+// High accuracy puts back the runs it makes worse on peak d2A/ds2 or
+// d2C/ds2 than the input's (SmoothingSettings::keep_runs_no_worse), and
+// puts runs back after its tolerance check without
 // breaking the tolerance. The program: the noisy CAM
 // path to u = 0.75, a link, then the clean SPO path on (already smooth,
 // so the solve can only roughen it). The second run goes back as programmed, pose for pose;

@@ -143,6 +143,10 @@ ToolPath ComposeRuns(const ToolPath& input, const ToolPath& output, const std::v
   return composed;
 }
 
+// A rise of a run's peak d2 below this (rad/mm^2) is no worsening: the
+// round-off of the written 6 decimals.
+constexpr double kD2Slack = 1e-9;
+
 // What a run of the output may not be worse than the input's on.
 struct NoWorseOn {
   bool d2 = true;       // peak d2A/ds2 and d2C/ds2
@@ -159,7 +163,7 @@ struct NoWorseOn {
 // d2C/ds2 (with `on.d2`; a run of on.inaccurate_runs only where also above
 // on.inaccurate_d2_bound) or limit violations (with `on.limits`) exceed
 // those of the same run of `input`, so that the program as a whole is no
-// worse on either; `back` (one flag a run) says which, and may come in with
+// worse on either (but for those runs); `back` (one flag a run) says which, and may come in with
 // runs already put back. A run's first sample also sees the last pose of the
 // run before, which a method may move: a run put back that is still worse
 // puts its predecessor back too, until none is (at worst the whole input).
@@ -183,8 +187,7 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
   const std::vector<size_t> in_first = RunStarts(input);
   ToolPath composed = ComposeRuns(input, *output, *back);
   if (!RunPeaks(composed, machine, default_feed_mm_per_min, &after).ok()) return false;
-  // Round-off of the written 6 decimals is no worsening.
-  constexpr double kSlack = 1e-9;
+
   for (bool changed = true; changed;) {
     changed = false;
     for (size_t r = 0; r < runs; ++r) {
@@ -192,7 +195,7 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
       const auto rougher = [&](int k) {
         const double bound = inaccurate ? std::max(before[r].peak_d2[k], on.inaccurate_d2_bound[k])
                                         : before[r].peak_d2[k];
-        return after[r].peak_d2[k] > bound + kSlack;
+        return after[r].peak_d2[k] > bound + kD2Slack;
       };
       const bool worse_d2 = rougher(0) || rougher(1);
       const bool worse_limits = after[r].limit_violations > before[r].limit_violations;
@@ -202,8 +205,9 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
         KeptRun& k = (*why)[r];
         if (!k.reason.empty()) continue;
         if (on.d2 && worse_d2) {
-          const int a = after[r].peak_d2[1] - before[r].peak_d2[1] >
-                                after[r].peak_d2[0] - before[r].peak_d2[0]
+          // The axis beyond its bound; of two, the one that rose more.
+          const int a = !rougher(0) || (rougher(1) && after[r].peak_d2[1] - before[r].peak_d2[1] >
+                                                          after[r].peak_d2[0] - before[r].peak_d2[0])
                             ? 1
                             : 0;
           k.reason = "d2";
@@ -254,7 +258,8 @@ using Evaluator = std::function<Status(const std::string& what, const ToolPath& 
 
 // High accuracy, a step after the solve and its tolerance check: the runs
 // the solve made worse on peak d2A/ds2 or d2C/ds2 go back as programmed
-// (KeepRunsNoWorse), so the mode never returns a program worse on either.
+// (KeepRunsNoWorse, with NoWorseOn's exception for runs programmed beyond
+// the tolerance).
 // A put-back run is the input's own poses, so where it alone cuts, the
 // deviation is the input's and the tolerance (which spares what the input
 // left) holds there. Where a put-back run and a moved neighbour both reach a
@@ -895,15 +900,49 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
 
 // One flag per cutting run of the input (RunStarts): whether its moves
 // leave a grid point of the surface farther than `tolerance_mm`
-// (RunsReaching; the input's own deviation, on the judged grid).
-std::vector<bool> RunsBeyondTolerance(const SmoothingRun& run, double tolerance_mm) {
+// (RunsReaching, with the input judged as its own output: its deviation on
+// the judged grid). `worst` (one a run) receives the worst of those points
+// each such run reaches. RunsReaching gives a run the points up to a grid
+// step past its contact rulings, so a run beside an inaccurate one can be
+// flagged too.
+std::vector<bool> RunsBeyondTolerance(const SmoothingRun& run, double tolerance_mm,
+                                      std::vector<KeptRun>* worst) {
   const DeviationReport& in = *run.result->input_metrics.deviation;
   std::vector<size_t> beyond;
   for (size_t k = 0; k < in.deviation_mm.size(); ++k) {
     if (std::abs(in.deviation_mm[k]) > tolerance_mm) beyond.push_back(k);
   }
-  std::vector<KeptRun> unused;
-  return RunsReaching(*run.job.surface, *run.job.input, in, in, beyond, tolerance_mm, &unused);
+  return RunsReaching(*run.job.surface, *run.job.input, in, in, beyond, tolerance_mm, worst);
+}
+
+// The runs of `output` rougher on peak d2A/ds2 or d2C/ds2 than the same
+// runs of the input (none where they do not pair up), with the programmed
+// run's worst deviation from `programmed` (RunsBeyondTolerance's).
+std::vector<RougherRun> RunsRougherThanProgrammed(const SmoothingRun& run, const ToolPath& output,
+                                                  const std::vector<KeptRun>& programmed) {
+  const double feed = run.settings.feed.default_feed_mm_per_min;
+  std::vector<RunFigures> before, after;
+  std::vector<RougherRun> rougher;
+  if (!RunPeaks(*run.job.input, *run.job.machine, feed, &before).ok() ||
+      !RunPeaks(output, *run.job.machine, feed, &after).ok() || before.size() != after.size()) {
+    return rougher;
+  }
+  const std::vector<size_t> first = RunStarts(*run.job.input);
+  for (size_t r = 0; r < before.size(); ++r) {
+    const double rise_a = after[r].peak_d2[0] - before[r].peak_d2[0];
+    const double rise_c = after[r].peak_d2[1] - before[r].peak_d2[1];
+    if (!(rise_a > kD2Slack || rise_c > kD2Slack)) continue;
+    const int a = rise_c > rise_a ? 1 : 0;
+    RougherRun k;
+    k.first_line = run.job.input->poses[first[r]].source_line;
+    k.last_line = run.job.input->poses[first[r + 1] - 1].source_line;
+    k.axis = a == 0 ? "A" : "C";
+    k.input_peak = before[r].peak_d2[a];
+    k.smoothed_peak = after[r].peak_d2[a];
+    k.input_worst_mm = r < programmed.size() ? programmed[r].worst_mm : 0.0;
+    rougher.push_back(std::move(k));
+  }
+  return rougher;
 }
 
 // High-accuracy mode after the spline method: the start, the solve held to
@@ -982,8 +1021,10 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& stations,
                                           : std::array<double, 2>{INFINITY, INFINITY};
   // Held to the tolerance, a smoothed run leaves no point farther than both
   // the tolerance and the programmed run (tolerance_promise.h).
+  std::vector<KeptRun> programmed_beyond;
   if (held.held_to_tolerance) {
-    held.no_worse.inaccurate_runs = RunsBeyondTolerance(run, options.tolerance_mm);
+    held.no_worse.inaccurate_runs =
+        RunsBeyondTolerance(run, options.tolerance_mm, &programmed_beyond);
     for (int k = 0; k < 2; ++k) {
       // No flank path, no bound beyond the programmed run's own.
       held.no_worse.inaccurate_d2_bound[k] =
@@ -1026,6 +1067,9 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& stations,
           "the smoothed path with runs kept as programmed does not fit the machine (" +
           s.message() + ")");
     }
+  }
+  if (no_worse.d2 && held_to_tolerance) {
+    result->runs_rougher = RunsRougherThanProgrammed(run, result->output, programmed_beyond);
   }
   if (!held.beyond_refusal.empty() &&
       !BeyondTolerance(run.input_allowance_mm, *result->output_at_input_feed.deviation,
@@ -1226,6 +1270,8 @@ void AddPieceReports(const SmoothingResult& part, bool feeds, bool high_accuracy
   result->stiffer_solves += part.stiffer_solves;
   result->peak_deviation_rounds += part.peak_deviation_rounds;
   result->runs_kept.insert(result->runs_kept.end(), part.runs_kept.begin(), part.runs_kept.end());
+  result->runs_rougher.insert(result->runs_rougher.end(), part.runs_rougher.begin(),
+                              part.runs_rougher.end());
   result->tolerance_rounds = std::max(result->tolerance_rounds, part.tolerance_rounds);
   result->tolerance_points += part.tolerance_points;
   result->solve_tolerance_mm = std::max(result->solve_tolerance_mm, part.solve_tolerance_mm);

@@ -65,6 +65,23 @@ struct KeptRun {
   std::string solver_message;
 };
 
+// A cutting run that high accuracy returned rougher on peak d2A/ds2 or
+// d2C/ds2 than programmed, which the never-worse rule lets through where the
+// programmed run leaves the surface beyond the tolerance
+// (SmoothingSettings::keep_runs_no_worse).
+struct RougherRun {
+  // Source lines of the run's first and last pose (ToolPose::source_line).
+  int first_line = 0;
+  int last_line = 0;
+  // The axis ("A" or "C") with the larger rise, and the run's peak there,
+  // programmed and smoothed, rad per mm^2 (the report gives deg).
+  std::string axis;
+  double input_peak = 0.0;
+  double smoothed_peak = 0.0;
+  // The programmed run's worst |deviation| on the judged grid, mm.
+  double input_worst_mm = 0.0;
+};
+
 struct SmoothingJob {
   const ToolPath* input = nullptr;
   const RuledSurface* surface = nullptr;  // null: surface-free smoothing
@@ -89,12 +106,13 @@ struct SmoothingSettings {
   bool accept_over_tolerance = false;
   // Put back as programmed the cutting runs the method made worse on peak
   // d2A/ds2 or d2C/ds2 (SmoothingResult::runs_kept_as_input), so that
-  // neither mode returns a program worse on either. High accuracy held to
-  // the tolerance (a surface, no accept_over_tolerance) keeps a run rougher
-  // than programmed where the programmed run leaves the surface beyond the
-  // tolerance and the smoothed one stays within stiffer_above_flank_d2
-  // times the flank path's peaks (below): put back, the run would be out of
-  // tolerance again.
+  // spline mode never returns a program worse on either; nor does high
+  // accuracy, but held to the tolerance (a surface, no
+  // accept_over_tolerance) it keeps a run rougher than programmed where
+  // the programmed run leaves a point of the surface beyond the tolerance
+  // and the smoothed one stays within stiffer_above_flank_d2 times the
+  // flank path's peaks (below; 0: never): put back, the run would be out of
+  // tolerance again (SmoothingResult::runs_rougher lists them).
   bool keep_runs_no_worse = true;
   // High accuracy with a surface, with keep_runs_no_worse: where the
   // result's peak d2A/ds2 or d2C/ds2 is above this many times that of the
@@ -112,10 +130,10 @@ struct SmoothingSettings {
   // deviation, and its peak stays where the smoothness and the surface
   // disagree most; each round holds the grid points farther than half the
   // worst (on every other grid line, and the worst point) within that
-  // bound and solves again from the result, and keeps
-  // what it made, or a blend of it with the result before, only where that
-  // lowers the worst deviation, keeps the tolerance, makes no run worse on
-  // peak d2 than the input's and leaves the peak d2 within
+  // bound and solves again from the result, and keeps what it made, or a
+  // blend of it with the result before, only where that lowers the worst
+  // deviation, keeps the tolerance, makes no run worse on peak d2 than the
+  // input's (as keep_runs_no_worse judges) and leaves the peak d2 within
   // stiffer_above_flank_d2 times the flank path's (or no rougher than
   // before). Each round costs a solve (README, "Random cases", stops 32
   // and 33).
@@ -168,14 +186,17 @@ struct SmoothingResult {
   int tolerance_rounds = 0;
   int tolerance_points = 0;
   // Runs put back as programmed because the method made their peak d2A/ds2
-  // or d2C/ds2 higher than the input's (neither mode returns a program
-  // worse on either), or, in high-accuracy mode, because the solve broke
+  // or d2C/ds2 higher than the input's (SmoothingSettings::
+  // keep_runs_no_worse), or, in high-accuracy mode, because the solve broke
   // more axis limits than its start and the input and these runs more than
   // the input's (put back rather than refused), or, with a surface, because
   // a neighbour put back left the mix beyond the tolerance.
   int runs_kept_as_input = 0;
   // Those runs in program order, each with its lines and reason.
   std::vector<KeptRun> runs_kept;
+  // High accuracy: the runs returned rougher than programmed, in program
+  // order (see RougherRun).
+  std::vector<RougherRun> runs_rougher;
   // High accuracy with a surface: solves repeated with the smoothness
   // weights raised because a run came out worse on peak d2 than the input's
   // (each kept only if held to the tolerance).
