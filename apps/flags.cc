@@ -76,14 +76,19 @@ DEFINE_string(strategy, "spo", "generate: spo (single-point offset) or dpo (doub
 DEFINE_double(uv_distortion, kFlankPath.uv_distortion,
               "generate: amplitude (in u) of a CAM-like U/V mismatch bump pairing C1(u) with "
               "C2(u + delta(u)); 0 = a clean path.");
-DEFINE_double(distortion_center, kFlankPath.distortion_center, "generate: u at the centre of the distortion bump.");
-DEFINE_double(distortion_width, kFlankPath.distortion_width, "generate: width in u of the distortion bump.");
-DEFINE_double(axis_noise_deg, kFlankPath.axis_noise_deg, "generate: standard deviation of random tool-axis noise, deg.");
+DEFINE_double(distortion_center, kFlankPath.distortion_center,
+              "generate: u at the centre of the distortion bump.");
+DEFINE_double(distortion_width, kFlankPath.distortion_width,
+              "generate: width in u of the distortion bump.");
+DEFINE_double(axis_noise_deg, kFlankPath.axis_noise_deg,
+              "generate: standard deviation of random tool-axis noise, deg.");
 DEFINE_int32(noise_seed, 1, "generate: seed of the axis noise (results are deterministic).");
-DEFINE_double(feed, kSettings.motion.default_feed_mm_per_min, "Programmed feed, mm/min (generate; default where a path has none).");
+DEFINE_double(feed, kSettings.motion.default_feed_mm_per_min,
+              "Programmed feed, mm/min (generate; default where a path has none).");
 
 DEFINE_int32(samples_u, kSettings.deviation.samples_u, "Deviation grid: samples along u.");
-DEFINE_int32(samples_v, kSettings.deviation.samples_v, "Deviation grid: samples along each ruling (v).");
+DEFINE_int32(samples_v, kSettings.deviation.samples_v,
+             "Deviation grid: samples along each ruling (v).");
 DEFINE_string(interpolation, "",
               "evaluate/smooth: how the controller moves between blocks, for the deviation and "
               "the high_accuracy cost: tcp (tip linear in the workpiece, A and C linear) or joint "
@@ -113,20 +118,28 @@ DEFINE_double(tolerance_mm, kSettings.high_accuracy.tolerance_mm,
 DEFINE_double(angle_tolerance_deg, kSettings.high_accuracy.angle_tolerance_deg,
               "high_accuracy without a surface: how far a tool axis may turn from the "
               "original, deg.");
-DEFINE_double(overcut_factor, kSettings.high_accuracy.overcut_factor, "high_accuracy: weight of overcut relative to undercut (>= 1).");
-DEFINE_double(w_deviation, kSettings.high_accuracy.w_deviation, "high_accuracy: weight of the swept-cutter deviation.");
-DEFINE_double(w_second, kSettings.high_accuracy.w_second,
-              "high_accuracy: weight of d2(A,C)/ds2, mm^4/rad^2 (solver/smooth/cost/smoothness_cost.h).");
-DEFINE_double(w_third, kSettings.high_accuracy.w_third, "high_accuracy: weight of d3(A,C)/ds3, mm^6/rad^2.");
+DEFINE_double(overcut_factor, kSettings.high_accuracy.overcut_factor,
+              "high_accuracy: weight of overcut relative to undercut (>= 1).");
+DEFINE_double(w_deviation, kSettings.high_accuracy.w_deviation,
+              "high_accuracy: weight of the swept-cutter deviation.");
+DEFINE_double(
+    w_second, kSettings.high_accuracy.w_second,
+    "high_accuracy: weight of d2(A,C)/ds2, mm^4/rad^2 (solver/smooth/cost/smoothness_cost.h).");
+DEFINE_double(w_third, kSettings.high_accuracy.w_third,
+              "high_accuracy: weight of d3(A,C)/ds3, mm^6/rad^2.");
 DEFINE_double(ruling_departure_factor, kSettings.high_accuracy.ruling_departure_factor,
               "high_accuracy with a surface: where the rulings give the axis its angles, "
               "d2 and d3 are of A's and C's departure from them, at this many times "
               "w_second and w_third (0: of the angles themselves; "
               "solver/smooth/ruling_angles.h).");
-DEFINE_double(w_tip_second, kSettings.high_accuracy.w_tip_second, "high_accuracy: weight of the tip's d2p/ds2, mm^2.");
-DEFINE_double(w_tip_third, kSettings.high_accuracy.w_tip_third, "high_accuracy: weight of the tip's d3p/ds3, mm^4.");
-DEFINE_double(w_limits, kSettings.high_accuracy.w_limits, "high_accuracy: weight of axis velocity/acceleration/jerk excess.");
-DEFINE_double(limit_margin, kSettings.high_accuracy.limit_margin, "high_accuracy: limit penalties start at this fraction.");
+DEFINE_double(w_tip_second, kSettings.high_accuracy.w_tip_second,
+              "high_accuracy: weight of the tip's d2p/ds2, mm^2.");
+DEFINE_double(w_tip_third, kSettings.high_accuracy.w_tip_third,
+              "high_accuracy: weight of the tip's d3p/ds3, mm^4.");
+DEFINE_double(w_limits, kSettings.high_accuracy.w_limits,
+              "high_accuracy: weight of axis velocity/acceleration/jerk excess.");
+DEFINE_double(limit_margin, kSettings.high_accuracy.limit_margin,
+              "high_accuracy: limit penalties start at this fraction.");
 DEFINE_double(w_tip_height, kSettings.high_accuracy.w_tip_height,
               "high_accuracy: weight holding each tip where the input had it along its axis "
               "relative to the floor (rail 0).");
@@ -136,9 +149,12 @@ DEFINE_double(axis_cone_deg, kSettings.high_accuracy.axis_cone_deg,
 DEFINE_double(w_walls, kSettings.high_accuracy.w_walls,
               "high_accuracy: weight of the walls keeping each axis in its cone and on its side "
               "of the surface and each linear joint inside its travel (0 = off).");
-DEFINE_int32(ruling_samples, kSettings.high_accuracy.ruling_samples, "high_accuracy: deviation samples along each ruling.");
-DEFINE_int32(between_samples, kSettings.high_accuracy.between_samples, "high_accuracy: deviation checks inside each move.");
-DEFINE_int32(max_iterations, kSettings.high_accuracy.max_iterations, "high_accuracy: Ceres iteration limit.");
+DEFINE_int32(ruling_samples, kSettings.high_accuracy.ruling_samples,
+             "high_accuracy: deviation samples along each ruling.");
+DEFINE_int32(between_samples, kSettings.high_accuracy.between_samples,
+             "high_accuracy: deviation checks inside each move.");
+DEFINE_int32(max_iterations, kSettings.high_accuracy.max_iterations,
+             "high_accuracy: Ceres iteration limit.");
 DEFINE_int32(coarse_poses, kSettings.high_accuracy.coarse_poses,
              "high_accuracy: a path of more than twice this many poses is solved coarse to fine, "
              "over every 8th pose down to about this many (0 = always solve in full).");
@@ -154,7 +170,8 @@ DEFINE_double(pole_passage_deg, kSettings.high_accuracy.pole_passage_deg,
 DEFINE_int32(pole_window_path_poses, kSettings.high_accuracy.pole_window_path_poses,
              "high_accuracy: on a longer path each pole passage is solved the other way in a "
              "window round it, not by solving the whole path again (0 = always the whole path).");
-DEFINE_int32(num_threads, kSettings.high_accuracy.num_threads, "high_accuracy: Ceres threads (the same count gives the same result).");
+DEFINE_int32(num_threads, kSettings.high_accuracy.num_threads,
+             "high_accuracy: Ceres threads (the same count gives the same result).");
 DEFINE_double(spline_tolerance_deg, kSettings.spline.angle_tolerance_deg,
               "spline: largest A/C change the fit may make outside the abrupt zones, deg "
               "(sets the smoothing).");
@@ -162,8 +179,10 @@ DEFINE_bool(smooth_outside_zones, kSettings.spline.smooth_outside_zones,
             "spline: move every pose onto the fitted A/C curves, not only the abrupt zones.");
 DEFINE_double(zone_factor, kSettings.spline.zone_factor,
               "spline: a zone is where |d2A/ds2|, |d2C/ds2| or |dK/ds| exceeds this x median.");
-DEFINE_int32(zone_padding, kSettings.spline.zone_padding, "spline: poses added on each side of a zone.");
-DEFINE_bool(insert_transitions, kSettings.spline.insert_transitions, "spline: insert a transition pose in every zone move.");
+DEFINE_int32(zone_padding, kSettings.spline.zone_padding,
+             "spline: poses added on each side of a zone.");
+DEFINE_bool(insert_transitions, kSettings.spline.insert_transitions,
+            "spline: insert a transition pose in every zone move.");
 DEFINE_double(pole_crossing_deg, kSettings.spline.pole_crossing_deg,
               "spline: a pole passage whose axes all lie within this angle of one plane through "
               "A = 0 is put on that plane, so A changes sign there with C held (0 = never).");
@@ -230,7 +249,8 @@ DEFINE_string(method, "mpec",
               "gouge-free strip centred on the CC point).");
 DEFINE_string(cutter, "", "stripwidth: the cutter, torus:R,r (outer and corner radius, mm).");
 DEFINE_int32(cc_points, 40, "stripwidth: CC points along the pass (v = --path_v, u in [0.05, 0.95]).");
-DEFINE_double(path_v, kStripPath.path_v, "stripwidth: the surface parameter v of the pass, in [0, 1].");
+DEFINE_double(path_v, kStripPath.path_v,
+              "stripwidth: the surface parameter v of the pass, in [0, 1].");
 DEFINE_double(lead_deg, 10.0, "stripwidth: Sturz's fixed lead angle, deg.");
 DEFINE_double(min_lead_deg, 1.0, "stripwidth: least lead angle mpm and mpec may use, deg (> 0).");
 DEFINE_double(max_lead_deg, 40.0, "stripwidth: largest lead angle mpm and mpec may use, deg.");

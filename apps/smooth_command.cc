@@ -100,7 +100,9 @@ void PrintRunLines(const std::vector<std::string>& lines) {
   for (size_t i = 0; i < lines.size() && i < kMaxRunLines; ++i) {
     std::printf("    %s\n", lines[i].c_str());
   }
-  if (lines.size() > kMaxRunLines) std::printf("    ... and %zu more\n", lines.size() - kMaxRunLines);
+  if (lines.size() > kMaxRunLines) {
+    std::printf("    ... and %zu more\n", lines.size() - kMaxRunLines);
+  }
 }
 
 void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& result) {
@@ -135,10 +137,11 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
     PrintRunLines(lines);
   }
   if (!result.runs_rougher.empty()) {
-    std::printf("  %d cutting runs rougher than programmed: each programmed run leaves the "
-                "surface beyond the tolerance, and the smoothed one stays within "
-                "--stiffer_above_flank_d2 times the surface's own flank path's peak d2\n",
-                static_cast<int>(result.runs_rougher.size()));
+    std::printf(
+        "  %d cutting runs rougher than programmed: each programmed run leaves the "
+        "surface beyond the tolerance, and the smoothed one stays within "
+        "--stiffer_above_flank_d2 times the surface's own flank path's peak d2\n",
+        static_cast<int>(result.runs_rougher.size()));
     std::vector<std::string> lines;
     for (const RougherRun& k : result.runs_rougher) {
       char line[256];

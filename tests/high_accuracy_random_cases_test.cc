@@ -461,7 +461,8 @@ TEST(HighAccuracyRandomCasesPutBackTest, AStifferSolveKeepsTheRunInsteadOfPuttin
 // pole with peak d2C at 1.47 x the clean SPO path's, 5.1 x the clean DPO
 // path's max |dev| off; the solve passes nearer the pole, rougher on C,
 // and until stop 38 its run went back after two stiffer solves.
-TEST(HighAccuracyRandomCasesPutBackTest, ARunProgrammedBeyondTheToleranceMayBeRougherThanProgrammed) {
+TEST(HighAccuracyRandomCasesPutBackTest,
+     ARunProgrammedBeyondTheToleranceMayBeRougherThanProgrammed) {
   RandomCase c;
   SmoothingResult result;
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(134u, &c, &result));

@@ -163,9 +163,9 @@ struct NoWorseOn {
 // d2C/ds2 (with `on.d2`; a run of on.inaccurate_runs only where also above
 // on.inaccurate_d2_bound) or limit violations (with `on.limits`) exceed
 // those of the same run of `input`, so that the program as a whole is no
-// worse on either (but for those runs); `back` (one flag a run) says which, and may come in with
-// runs already put back. A run's first sample also sees the last pose of the
-// run before, which a method may move: a run put back that is still worse
+// worse on either (but for those runs); `back` (one flag a run) says which,
+// and may come in with runs already put back. A run's first sample also
+// sees the last pose of the run before, which a method may move: a run put back that is still worse
 // puts its predecessor back too, until none is (at worst the whole input).
 // False, with nothing changed, when the two paths' runs do not pair up
 // (which no method makes) or joints cannot be assigned. `why`, if not null,
@@ -187,7 +187,6 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
   const std::vector<size_t> in_first = RunStarts(input);
   ToolPath composed = ComposeRuns(input, *output, *back);
   if (!RunPeaks(composed, machine, default_feed_mm_per_min, &after).ok()) return false;
-
   for (bool changed = true; changed;) {
     changed = false;
     for (size_t r = 0; r < runs; ++r) {
@@ -206,10 +205,11 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
         if (!k.reason.empty()) continue;
         if (on.d2 && worse_d2) {
           // The axis beyond its bound; of two, the one that rose more.
-          const int a = !rougher(0) || (rougher(1) && after[r].peak_d2[1] - before[r].peak_d2[1] >
-                                                          after[r].peak_d2[0] - before[r].peak_d2[0])
-                            ? 1
-                            : 0;
+          const int a =
+              !rougher(0) || (rougher(1) && after[r].peak_d2[1] - before[r].peak_d2[1] >
+                                                after[r].peak_d2[0] - before[r].peak_d2[0])
+                  ? 1
+                  : 0;
           k.reason = "d2";
           k.axis = a == 0 ? "A" : "C";
           k.input_peak = before[r].peak_d2[a];
