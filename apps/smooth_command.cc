@@ -94,6 +94,16 @@ std::string DescribeKeptRun(const KeptRun& k) {
   return line;
 }
 
+std::string DescribeRougherRun(const RougherRun& k) {
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "lines %d-%d: peak d2%s/ds2 %.4g -> %.4g deg/mm^2 (input -> smoothed); "
+                "programmed %.4g mm off the surface",
+                k.first_line, k.last_line, k.axis.c_str(), k.input_peak * kRadToDeg,
+                k.smoothed_peak * kRadToDeg, k.input_worst_mm);
+  return line;
+}
+
 // One line a run, the first kMaxRunLines of them (the report lists all).
 void PrintRunLines(const std::vector<std::string>& lines) {
   constexpr size_t kMaxRunLines = 20;
@@ -143,15 +153,7 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
         "--stiffer_above_flank_d2 times the surface's own flank path's peak d2\n",
         static_cast<int>(result.runs_rougher.size()));
     std::vector<std::string> lines;
-    for (const RougherRun& k : result.runs_rougher) {
-      char line[256];
-      std::snprintf(line, sizeof line,
-                    "lines %d-%d: peak d2%s/ds2 %.4g -> %.4g deg/mm^2 (input -> smoothed); "
-                    "programmed %.4g mm off the surface",
-                    k.first_line, k.last_line, k.axis.c_str(), k.input_peak * kRadToDeg,
-                    k.smoothed_peak * kRadToDeg, k.input_worst_mm);
-      lines.push_back(line);
-    }
+    for (const RougherRun& k : result.runs_rougher) lines.push_back(DescribeRougherRun(k));
     PrintRunLines(lines);
   }
   if (result.feed.moves_slowed > 0) {

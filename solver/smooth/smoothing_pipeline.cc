@@ -147,6 +147,15 @@ ToolPath ComposeRuns(const ToolPath& input, const ToolPath& output, const std::v
 // round-off of the written 6 decimals.
 constexpr double kD2Slack = 1e-9;
 
+// Of the axes `candidates` flags (0: A, 1: C; at least one), the one whose
+// run peak d2 rose more from `before` to `after`.
+int AxisThatRoseMore(const RunFigures& before, const RunFigures& after,
+                     std::array<bool, 2> candidates) {
+  if (!candidates[0]) return 1;
+  if (!candidates[1]) return 0;
+  return after.peak_d2[1] - before.peak_d2[1] > after.peak_d2[0] - before.peak_d2[0] ? 1 : 0;
+}
+
 // What a run of the output may not be worse than the input's on.
 struct NoWorseOn {
   bool d2 = true;       // peak d2A/ds2 and d2C/ds2
@@ -205,11 +214,7 @@ bool KeepRunsNoWorse(const ToolPath& input, const Machine& machine, double defau
         if (!k.reason.empty()) continue;
         if (on.d2 && worse_d2) {
           // The axis beyond its bound; of two, the one that rose more.
-          const int a =
-              !rougher(0) || (rougher(1) && after[r].peak_d2[1] - before[r].peak_d2[1] >
-                                                after[r].peak_d2[0] - before[r].peak_d2[0])
-                  ? 1
-                  : 0;
+          const int a = AxisThatRoseMore(before[r], after[r], {rougher(0), rougher(1)});
           k.reason = "d2";
           k.axis = a == 0 ? "A" : "C";
           k.input_peak = before[r].peak_d2[a];
@@ -929,10 +934,10 @@ std::vector<RougherRun> RunsRougherThanProgrammed(const SmoothingRun& run, const
   }
   const std::vector<size_t> first = RunStarts(*run.job.input);
   for (size_t r = 0; r < before.size(); ++r) {
-    const double rise_a = after[r].peak_d2[0] - before[r].peak_d2[0];
-    const double rise_c = after[r].peak_d2[1] - before[r].peak_d2[1];
-    if (!(rise_a > kD2Slack || rise_c > kD2Slack)) continue;
-    const int a = rise_c > rise_a ? 1 : 0;
+    const std::array<bool, 2> rose = {after[r].peak_d2[0] - before[r].peak_d2[0] > kD2Slack,
+                                      after[r].peak_d2[1] - before[r].peak_d2[1] > kD2Slack};
+    if (!rose[0] && !rose[1]) continue;
+    const int a = AxisThatRoseMore(before[r], after[r], rose);
     RougherRun k;
     k.first_line = run.job.input->poses[first[r]].source_line;
     k.last_line = run.job.input->poses[first[r + 1] - 1].source_line;
