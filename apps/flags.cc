@@ -197,6 +197,10 @@ DEFINE_double(stiffer_above_flank_d2, kSettings.stiffer_above_flank_d2,
               "smooth: high_accuracy with a surface solves again with stiffer smoothing where "
               "its peak d2A/ds2 or d2C/ds2 is above this many times the surface's own flank "
               "(SPO) path's (0 = never).");
+DEFINE_int32(stiffer_solves, kSettings.stiffer_solves,
+             "smooth: high_accuracy with a surface solves again with stiffer smoothing (each "
+             "time ten times the last's weights) at most this many times in turn, 0-8 (0 = "
+             "none).");
 DEFINE_int32(peak_deviation_rounds, kSettings.peak_deviation_rounds,
              "smooth: high_accuracy with a surface solves again up to this many times to lower "
              "the result's worst deviation, holding the grid points farther than half of it (on "

@@ -86,6 +86,7 @@ DECLARE_bool(smooth_outside_zones);
 DECLARE_bool(accept_over_tolerance);
 DECLARE_bool(keep_runs_no_worse);
 DECLARE_double(stiffer_above_flank_d2);
+DECLARE_int32(stiffer_solves);
 DECLARE_int32(peak_deviation_rounds);
 DECLARE_double(link_feed_ratio);
 DECLARE_bool(schedule_feed);

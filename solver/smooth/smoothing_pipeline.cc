@@ -705,11 +705,11 @@ bool RunsWorseThanInput(const SmoothingRun& run, const NoWorseOn& on, const Tool
 // tip's to at least kStifferTipMm2) and A held to its ruling's A near the
 // pole too (ruling_a_near_pole: there a noisy A's ripple costs the default
 // weights next to nothing; README, "Random cases", stop 36), at most
-// kStifferSolves times, each held to the tolerance again, from two starts:
-// its own result, and the start the first solve had. From a rough result
-// the stiffer solve can stay in its valley or roughen further (seed 199:
-// 3.7 -> 34 x the flank path's peak d2 from its result, 2.5 x from the
-// first start; seed 130's from its result was refused); where both are
+// settings.stiffer_solves times in turn, each held to the tolerance again,
+// from two starts: its own result, and the start the first solve had. From
+// a rough result the stiffer solve can stay in its valley or roughen further
+// (seed 199: 3.7 -> 34 x the flank path's peak d2 from its result, 2.5 x from
+// the first start; seed 130's from its result was refused); where both are
 // taken the smoother is kept (README, "Random cases", stop 34). A stiffer
 // solve that is refused, or that was asked for by the flank path's peaks
 // alone and does not come nearer them or leaves the surface more than
@@ -721,7 +721,6 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
   const SmoothingJob& job = run.job;
   const SmoothingSettings& settings = run.settings;
   SmoothingResult* result = run.result;
-  constexpr int kStifferSolves = 2;
   constexpr double kStifferFactor = 10.0;
   // The tip's d2 weighs at least this much in a stiffer solve (mm^2): a
   // rough result's poses can slide to and fro along the path, which the
@@ -735,8 +734,9 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
   // With the factor at 0 the flank path's peaks ask for no stiffer solve.
   const std::array<double, 2> rough_flank =
       rough_factor > 0 ? flank : std::array<double, 2>{INFINITY, INFINITY};
-  for (int k = 0; k < kStifferSolves && settings.keep_runs_no_worse && job.surface != nullptr &&
-                  settings.resample_step_mm <= 0 && held->beyond_runs.empty();
+  for (int k = 0;
+       k < settings.stiffer_solves && settings.keep_runs_no_worse && job.surface != nullptr &&
+       settings.resample_step_mm <= 0 && held->beyond_runs.empty();
        ++k) {
     std::vector<bool> worse_runs;
     if (!RunsWorseThanInput(run, held->no_worse, result->output, &worse_runs)) break;

@@ -125,6 +125,13 @@ struct SmoothingSettings {
   // path has the input's pose count, a judge's may have another, and their
   // peaks differ by a few per cent (README, "Random cases", stop 36).
   double stiffer_above_flank_d2 = 1.8;
+  // How many stiffer solves in turn at most, each with the smoothness
+  // weights ten times the last's (0 = none; at most kMaxStifferSolves).
+  // Under joint interpolation the axes bend to keep each move's middle on
+  // the surface, and two did not reach the flank path's peaks on most
+  // cases that asked for them (README, "Random cases", stop 39).
+  int stiffer_solves = 4;
+  static constexpr int kMaxStifferSolves = 8;
   // High accuracy with a surface: rounds that lower the result's peak
   // deviation after the solve (0 = none). Least squares spreads the
   // deviation, and its peak stays where the smoothness and the surface
