@@ -676,6 +676,12 @@ INSTANTIATE_TEST_SUITE_P(StifferTriggerMargin, HighAccuracyRandomCasesTest,
 INSTANTIATE_TEST_SUITE_P(RougherThanProgrammed, HighAccuracyRandomCasesTest,
                          ::testing::Values(108u));
 
+// Joint interpolation: seeds that hold the targets only since stop 39's
+// stiffer solves, up to four in turn (two before: d2A 11 x, d2C 9.0 x and
+// d2A 4.1 x the clean SPO path's).
+INSTANTIATE_TEST_SUITE_P(MoreStifferSolves, HighAccuracyRandomCasesJointTest,
+                         ::testing::Values(20u, 109u, 196u));
+
 // Seeds that still fail (stop 35: at even stations, the departure from the
 // rulings differentiated, the leads' axes continuing the cut's, two
 // deviation checks inside each move, rough axes solved stiffer from both
@@ -687,12 +693,6 @@ INSTANTIATE_TEST_SUITE_P(RougherThanProgrammed, HighAccuracyRandomCasesTest,
 // rulings give no reference; the clean DPO path's own is 7.1 x there, and
 // the seed holds in RoughReference below. Seed 22 (d2C 3.4 at stop 34)
 // holds since stop 35's stiffer tip weight and is in Passing.
-// Joint interpolation: seeds that hold the targets only since stop 39's
-// four stiffer solves (two before: d2A 11 x, d2C 9.0 x and d2A 4.1 x the
-// clean SPO path's).
-INSTANTIATE_TEST_SUITE_P(MoreStifferSolves, HighAccuracyRandomCasesJointTest,
-                         ::testing::Values(20u, 109u, 196u));
-
 INSTANTIATE_TEST_SUITE_P(DISABLED_FailingUntilTheSolverFixes, HighAccuracyRandomCasesTest,
                          ::testing::Values(1u));
 

@@ -284,7 +284,8 @@ TEST_F(ToleranceInvariantTest, HoldsThePointsBeyondTheToleranceUntilItHolds) {
 // tolerance and the input. Refused with exit 3 until stop 23. The clean SPO
 // path at 100 poses: the first solve and its three retries (issue 16, stop
 // 25) all leave points beyond kTightMm. (At 300 poses a retry holds it, and
-// the d2 rule then puts the run back after two stiffer solves: 6 min.)
+// the d2 rule then puts the run back after its stiffer solves: 6 min at
+// stop 25, with two.)
 TEST_F(ToleranceInvariantTest, PutsBackWhatCannotBeHeldUnlessAccepted) {
   FlankPathOptions g;
   g.poses = 100;

@@ -345,6 +345,11 @@ TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--stiffer_solves must be between 0 and 8 (got 9)"), std::string::npos)
       << r.output;
+  r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
+                       " --mode=spline --stiffer_solves=-1"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("--stiffer_solves must be between 0 and 8 (got -1)"), std::string::npos)
+      << r.output;
   r = RunCommand(Tpopt("smooth --in=" + dir.File("nope.cls") + " --out=" + out + " --mode=spline"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_FALSE(FileExists(out));

@@ -734,9 +734,9 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
   // With the factor at 0 the flank path's peaks ask for no stiffer solve.
   const std::array<double, 2> rough_flank =
       rough_factor > 0 ? flank : std::array<double, 2>{INFINITY, INFINITY};
-  for (int k = 0;
-       k < settings.stiffer_solves && settings.keep_runs_no_worse && job.surface != nullptr &&
-       settings.resample_step_mm <= 0 && held->beyond_runs.empty();
+  for (int k = 0; k < std::min(settings.stiffer_solves, SmoothingSettings::kMaxStifferSolves) &&
+                  settings.keep_runs_no_worse && job.surface != nullptr &&
+                  settings.resample_step_mm <= 0 && held->beyond_runs.empty();
        ++k) {
     std::vector<bool> worse_runs;
     if (!RunsWorseThanInput(run, held->no_worse, result->output, &worse_runs)) break;

@@ -126,7 +126,8 @@ struct SmoothingSettings {
   // peaks differ by a few per cent (README, "Random cases", stop 36).
   double stiffer_above_flank_d2 = 1.8;
   // How many stiffer solves in turn at most, each with the smoothness
-  // weights ten times the last's (0 = none; at most kMaxStifferSolves).
+  // weights ten times the last's (0 = none; more than kMaxStifferSolves
+  // counts as that many).
   // Under joint interpolation the axes bend to keep each move's middle on
   // the surface, and two did not reach the flank path's peaks on most
   // cases that asked for them (README, "Random cases", stop 39).
