@@ -95,12 +95,12 @@ bool MakeCase(unsigned seed, RandomCase* c) {
   return MakeRandomCase(seed, options, SharedMachines(), c).ok();
 }
 
-// High accuracy as the issue's targets judge it: TCP motion, the input's
-// covered range.
-SmoothingSettings AsTheIssueJudges() {
+// High accuracy as the issue's targets judge it: TCP motion (or
+// `interpolation`), the input's covered range.
+SmoothingSettings AsTheIssueJudges(Interpolation interpolation = Interpolation::kTcp) {
   SmoothingSettings settings;
   settings.mode = SmoothingMode::kHighAccuracy;
-  settings.deviation.interpolation = Interpolation::kTcp;
+  settings.deviation.interpolation = interpolation;
   settings.judge_on_input_range = true;
   return settings;
 }
@@ -148,10 +148,8 @@ void ExpectIssueTargets(unsigned seed, D2Bound d2_bound,
   ASSERT_TRUE(MakeCase(seed, &c));
   SCOPED_TRACE(c.description);
   if (!c.fits_machine) GTEST_SKIP() << "the input does not fit the machine: " << c.fit_note;
-  SmoothingSettings settings = AsTheIssueJudges();
-  settings.deviation.interpolation = interpolation;
   SmoothingResult result;
-  const Status s = testing::SmoothRandomCase(c, settings, &result);
+  const Status s = testing::SmoothRandomCase(c, AsTheIssueJudges(interpolation), &result);
   ASSERT_TRUE(s.ok()) << s.message();
 
   double u_min = 0, u_max = 0;
@@ -223,8 +221,7 @@ TEST(HighAccuracyRandomCasesTest, UnderJointInterpolationTwoStifferSolvesLeaveTh
   RandomCase c;
   ASSERT_TRUE(MakeCase(20, &c));
   ASSERT_TRUE(c.fits_machine) << c.description;
-  SmoothingSettings settings = AsTheIssueJudges();
-  settings.deviation.interpolation = Interpolation::kJoint;
+  SmoothingSettings settings = AsTheIssueJudges(Interpolation::kJoint);
   settings.stiffer_solves = 2;
   SmoothingResult two;
   ASSERT_TRUE(testing::SmoothRandomCase(c, settings, &two).ok());

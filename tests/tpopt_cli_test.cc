@@ -327,30 +327,24 @@ TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
   TempDir dir;
   const std::string out = dir.File("out.cls");
   std::ofstream(dir.File("p.cls")) << "CUTTER/8\nGOTO/0,0,0\nGOTO/1,0,0\nGOTO/2,0,0\nGOTO/3,0,0\n";
-  auto r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out + " --mode=fancy"));
-  EXPECT_EQ(r.exit_code, 2);
-  r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
-                       " --mode=spline --tolerance_mm=-1"));
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--tolerance_mm must be finite and > 0 (got -1)"), std::string::npos)
-      << r.output;
-  r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
-                       " --mode=spline --stiffer_above_flank_d2=-1"));
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--stiffer_above_flank_d2 must be finite and >= 0 (got -1)"),
-            std::string::npos)
-      << r.output;
-  r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
-                       " --mode=spline --stiffer_solves=9"));
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--stiffer_solves must be between 0 and 8 (got 9)"), std::string::npos)
-      << r.output;
-  r = RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out +
-                       " --mode=spline --stiffer_solves=-1"));
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.output.find("--stiffer_solves must be between 0 and 8 (got -1)"), std::string::npos)
-      << r.output;
-  r = RunCommand(Tpopt("smooth --in=" + dir.File("nope.cls") + " --out=" + out + " --mode=spline"));
+  // `flags` on a good program: exit 2 with `message`.
+  const auto expect_usage_error = [&](const std::string& flags, const std::string& message) {
+    const auto r =
+        RunCommand(Tpopt("smooth --in=" + dir.File("p.cls") + " --out=" + out + " " + flags));
+    EXPECT_EQ(r.exit_code, 2) << flags;
+    EXPECT_NE(r.output.find(message), std::string::npos) << r.output;
+  };
+  expect_usage_error("--mode=fancy", "--mode=fancy must be spline, high_accuracy or none");
+  expect_usage_error("--mode=spline --tolerance_mm=-1",
+                     "--tolerance_mm must be finite and > 0 (got -1)");
+  expect_usage_error("--mode=spline --stiffer_above_flank_d2=-1",
+                     "--stiffer_above_flank_d2 must be finite and >= 0 (got -1)");
+  expect_usage_error("--mode=spline --stiffer_solves=9",
+                     "--stiffer_solves must be between 0 and 8 (got 9)");
+  expect_usage_error("--mode=spline --stiffer_solves=-1",
+                     "--stiffer_solves must be between 0 and 8 (got -1)");
+  auto r =
+      RunCommand(Tpopt("smooth --in=" + dir.File("nope.cls") + " --out=" + out + " --mode=spline"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_FALSE(FileExists(out));
 }
