@@ -48,6 +48,7 @@ DECLARE_int32(samples_v);
 DECLARE_bool(whole_surface);
 DECLARE_bool(judge_on_input_range);
 DECLARE_bool(even_stations);
+DECLARE_int32(split_moves_for_tolerance);
 DECLARE_string(interpolation);
 
 

@@ -152,6 +152,8 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
   report["peak_deviation_rounds"] = result.peak_deviation_rounds;
   report["lead_poses_continued"] = result.lead_poses_continued;
   report["even_stations"] = result.even_stations;
+  report["moves_per_move"] = result.moves_per_move;
+  report["runs_kept_at_program_moves"] = result.runs_kept_at_program_moves;
   report["feed_schedule"] = {{"passes", result.feed.passes},
                              {"moves_slowed", result.feed.moves_slowed},
                              {"moves_raised", result.feed.moves_raised},

@@ -127,6 +127,12 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
                   result.tolerance_rounds, result.tolerance_points,
                   settings.high_accuracy.tolerance_mm);
     }
+    if (result.moves_per_move > 1) {
+      std::printf(
+          "  solved again with each cutting move split in %d: the program's own moves "
+          "put %d runs back as programmed\n",
+          result.moves_per_move, result.runs_kept_at_program_moves);
+    }
     if (ha.pole_passages > 0) {
       std::printf("  pole passages: %d solved both ways round A = 0 (%d in a window round them), "
                   "%d kept the other way\n",
@@ -205,6 +211,7 @@ Status RequestFromFlags(SmoothRequest* request) {
   settings.peak_deviation_rounds = FLAGS_peak_deviation_rounds;
   settings.judge_on_input_range = FLAGS_judge_on_input_range;
   settings.even_stations = FLAGS_even_stations;
+  settings.split_moves_for_tolerance = FLAGS_split_moves_for_tolerance;
   settings.resample_step_mm = FLAGS_resample_step_mm;
   RETURN_IF_ERROR(FeedScheduleOptionsFromFlags(&settings.feed));
   RETURN_IF_ERROR(MetricOptionsFromFlags(&settings.deviation, &settings.motion));
@@ -225,6 +232,12 @@ Status RequestFromFlags(SmoothRequest* request) {
     return Status::Usage(
         InvalidField("--stiffer_solves", FLAGS_stiffer_solves,
                      "between 0 and " + std::to_string(SmoothingSettings::kMaxStifferSolves)));
+  }
+  if (FLAGS_split_moves_for_tolerance < 1 ||
+      FLAGS_split_moves_for_tolerance > SmoothingSettings::kMaxSplitMoves) {
+    return Status::Usage(
+        InvalidField("--split_moves_for_tolerance", FLAGS_split_moves_for_tolerance,
+                     "between 1 and " + std::to_string(SmoothingSettings::kMaxSplitMoves)));
   }
   if (FLAGS_peak_deviation_rounds < 0) {
     return Status::Usage(InvalidField("--peak_deviation_rounds", FLAGS_peak_deviation_rounds,

@@ -5,7 +5,8 @@
 // ends and the poses around a rapid stay where they are (the strip neither
 // curves nor twists, so every move errs alike at equal steps); and on a
 // strip whose ruling turns at a constant rate in its second half only, the
-// steps there are shorter by the square root of twice the error density.
+// steps there are shorter by the square root of twice the error density;
+// split moves add stations between the program's poses at the same steps.
 #include "solver/smooth/even_stations.h"
 
 #include <cmath>
@@ -65,7 +66,7 @@ TEST_F(EvenStationsTest, UnevenPosesComeBackAtEqualStepsOnTheInputsMotion) {
     }
     path.poses[0].rapid = true;
     ToolPath even;
-    ASSERT_TRUE(EvenStations(path, surface_, machine_, model, &even).ok());
+    ASSERT_TRUE(EvenStations(path, surface_, machine_, model, 1, &even).ok());
     ASSERT_EQ(even.poses.size(), path.poses.size());
     // The lead-in (beyond the end) and the stretch's ends keep their place.
     for (size_t i : {0u, 1u, 2u, 9u}) {
@@ -92,7 +93,7 @@ TEST_F(EvenStationsTest, ARapidOrAToolChangeEndsAStretch) {
   path.poses[3].rapid = true;  // two stretches: 0..2 and 3..7
   for (size_t i = 5; i < path.poses.size(); ++i) path.poses[i].tool = 1;  // 3..4, 5..7
   ToolPath even;
-  ASSERT_TRUE(EvenStations(path, surface_, machine_, Interpolation::kTcp, &even).ok());
+  ASSERT_TRUE(EvenStations(path, surface_, machine_, Interpolation::kTcp, 1, &even).ok());
   // 0..2: pose 1 at x 1.5; 3..4: nothing inside; 5..7: pose 6 at x 80.
   const std::vector<double> x = {0, 1.5, 3, 40, 41, 60, 80, 100};
   for (size_t i = 0; i < x.size(); ++i) {
@@ -118,7 +119,7 @@ TEST_F(EvenStationsTest, StepsShortenWhereTheRulingTurns) {
   constexpr int kPoses = 101;
   for (int i = 0; i < kPoses; ++i) path.poses.push_back(PoseAt(kLengthMm * i / (kPoses - 1)));
   ToolPath even;
-  ASSERT_TRUE(EvenStations(path, turning, machine_, Interpolation::kTcp, &even).ok());
+  ASSERT_TRUE(EvenStations(path, turning, machine_, Interpolation::kTcp, 1, &even).ok());
   // Mean step over x in [10, 40] and in [60, 90], away from the blend at 50.
   const auto mean_step = [&](double from, double to) {
     double sum = 0;
@@ -132,6 +133,35 @@ TEST_F(EvenStationsTest, StepsShortenWhereTheRulingTurns) {
     return sum / count;
   };
   EXPECT_NEAR(mean_step(10, 40) / mean_step(60, 90), std::sqrt(2.0), 0.1);
+}
+
+// Split in three, the stretch 0..100 of 7 moves gets 21, at 100 k / 21 on
+// the line: every third is the unsplit station with the program's pose
+// (its source line), those between new poses of the move into it.
+TEST_F(EvenStationsTest, SplitMovesAddEqualStepsBetweenTheProgramsPoses) {
+  ToolPath path;
+  for (double x : {-4.0, -2.0, 0.0, 1.0, 5.0, 5.001, 20.0, 50.0, 51.0, 100.0}) {
+    path.poses.push_back(PoseAt(x));
+    path.poses.back().source_line = static_cast<int>(path.poses.size());
+    path.poses.back().feed_mm_per_min = 100.0 * path.poses.size();
+  }
+  path.poses[0].rapid = true;
+  ToolPath split;
+  ASSERT_TRUE(EvenStations(path, surface_, machine_, Interpolation::kTcp, 3, &split).ok());
+  ASSERT_EQ(split.poses.size(), 2u + 22u);
+  // The lead-in keeps its two poses and its move; the stretch starts at 2.
+  for (size_t i : {0u, 1u, 2u}) EXPECT_EQ(split.poses[i].p_w_tip, path.poses[i].p_w_tip) << i;
+  for (size_t k = 1; k <= 21; ++k) {
+    const ToolPose& got = split.poses[2 + k];
+    const ToolPose expected = PoseAt(kLengthMm * k / 21.0);
+    EXPECT_NEAR((got.p_w_tip - expected.p_w_tip).norm(), 0, 1e-9) << k;
+    EXPECT_NEAR(std::acos(std::min(1.0, got.a_w.dot(expected.a_w))), 0, 1e-7) << k;
+    const size_t program_pose = 2 + (k + 2) / 3;
+    EXPECT_EQ(got.source_line, k % 3 == 0 ? path.poses[program_pose].source_line : 0) << k;
+    EXPECT_EQ(got.feed_mm_per_min, path.poses[program_pose].feed_mm_per_min) << k;
+  }
+  ToolPath refused;
+  EXPECT_FALSE(EvenStations(path, surface_, machine_, Interpolation::kTcp, 0, &refused).ok());
 }
 
 }  // namespace

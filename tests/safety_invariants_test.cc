@@ -178,8 +178,8 @@ TEST(OverhangTest, TipBelowTheFloorKeepsItsOverhangAndFitsTheMachine) {
       for (size_t i = 0; i < n; ++i) u[i] = i / (n - 1.0);
       if (even) {
         ToolPath stations;
-        ASSERT_TRUE(EvenStations(cam, surface, sim, settings.deviation.interpolation, &stations)
-                        .ok());
+        ASSERT_TRUE(
+            EvenStations(cam, surface, sim, settings.deviation.interpolation, 1, &stations).ok());
         u = ProjectPathOntoRail(surface.rail(0), stations);
       }
       for (size_t i = 0; i < n; ++i) {
@@ -235,6 +235,9 @@ class ToleranceInvariantTest : public ::testing::Test {
     settings.high_accuracy.tolerance_mm = tolerance_mm;
     settings.accept_over_tolerance = accept_over_tolerance;
     settings.stiffer_above_flank_d2 = stiffer_above_flank_d2;
+    // What goes back as programmed, at the program's own move count (the
+    // split moves that may keep a run instead are tested on random cases).
+    settings.split_moves_for_tolerance = 1;
     return RunSmoothing({&input, &surface_, &*input.cutter, &machine_}, settings, result);
   }
 

@@ -343,6 +343,8 @@ TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
                      "--stiffer_solves must be between 0 and 8 (got 9)");
   expect_usage_error("--mode=spline --stiffer_solves=-1",
                      "--stiffer_solves must be between 0 and 8 (got -1)");
+  expect_usage_error("--mode=spline --split_moves_for_tolerance=0",
+                     "--split_moves_for_tolerance must be between 1 and 8 (got 0)");
   auto r =
       RunCommand(Tpopt("smooth --in=" + dir.File("nope.cls") + " --out=" + out + " --mode=spline"));
   EXPECT_EQ(r.exit_code, 1);

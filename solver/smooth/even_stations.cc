@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "model/path/rail_projection.h"
@@ -32,16 +33,19 @@ double MoveErrorDensity(const RuledSurface& surface, double u) {
   return (ruling(u0).norm() * e_ss + kappa) / 8;
 }
 
-// Places poses first+1 .. last-1 of `out` along the moves of `path` between
-// poses first and last so that every move makes the same error: at equal
-// steps of the integral of sqrt(density) over tip arc length, the density
-// (MoveErrorDensity at each pose's contact u) floored at its mean over the
-// stretch, so that a nearly flat stretch is spaced evenly in arc length and
-// poses gather only where the error concentrates (README, "Random cases",
-// stop 26, for the floors tried).
+// Appends to `out` the stretch of `path` from pose first to pose last as
+// (last - first) * moves_per_move moves along its motion, each making the
+// same error: at equal steps of the integral of sqrt(density) over tip arc
+// length, the density (MoveErrorDensity at each pose's contact u) floored at
+// its mean over the stretch, so that a nearly flat stretch is spaced evenly
+// in arc length and poses gather only where the error concentrates (README,
+// "Random cases", stop 26, for the floors tried). Every moves_per_move-th
+// station is the program's pose of that place in the stretch; those between
+// are new poses (Derived) of the move into the next of them.
 void SpaceStretch(const ToolPath& path, const std::vector<JointVector>& joints,
                   const std::vector<double>& density, const KinematicParams& kinematics,
-                  Interpolation interpolation, size_t first, size_t last, ToolPath* out) {
+                  Interpolation interpolation, size_t first, size_t last, int moves_per_move,
+                  ToolPath* out) {
   double mean = 0.0;
   for (size_t i = first; i <= last; ++i) mean += density[i] / (last - first + 1);
   // (A stretch that neither curves nor twists has no density: even steps.)
@@ -52,29 +56,39 @@ void SpaceStretch(const ToolPath& path, const std::vector<JointVector>& joints,
     const double move_mm = (path.poses[i].p_w_tip - path.poses[i - 1].p_w_tip).norm();
     phi[i - first] = phi[i - 1 - first] + 0.5 * (weight(i - 1) + weight(i)) * move_mm;
   }
+  const size_t stations = (last - first) * moves_per_move;
+  out->poses.push_back(path.poses[first]);
   size_t move = first;  // the move move -> move + 1 holds the station
-  for (size_t k = first + 1; k < last; ++k) {
-    const double station = phi.back() * static_cast<double>(k - first) / (last - first);
+  for (size_t k = 1; k < stations; ++k) {
+    const size_t program_pose = first + (k + moves_per_move - 1) / moves_per_move;
+    ToolPose pose =
+        k % moves_per_move == 0 ? path.poses[program_pose] : Derived(path.poses[program_pose]);
+    const double station = phi.back() * static_cast<double>(k) / stations;
     while (move + 1 < last && phi[move + 1 - first] < station) ++move;
     const double span = phi[move + 1 - first] - phi[move - first];
     const double lambda = span > 0 ? (station - phi[move - first]) / span : 0.0;
     InterpolateMove<double>(kinematics, interpolation, joints[move], joints[move + 1],
                             path.poses[move].p_w_tip, path.poses[move + 1].p_w_tip, lambda,
-                            &out->poses[k].p_w_tip, &out->poses[k].a_w);
+                            &pose.p_w_tip, &pose.a_w);
     // Its joints are no longer those the program gave the block.
-    out->poses[k].programmed.reset();
+    pose.programmed.reset();
+    out->poses.push_back(pose);
   }
+  out->poses.push_back(path.poses[last]);
 }
 
 }  // namespace
 
 Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Machine& machine,
-                    Interpolation interpolation, ToolPath* out) {
+                    Interpolation interpolation, int moves_per_move, ToolPath* out) {
+  if (moves_per_move < 1) {
+    return Status::Error("even stations: " + std::to_string(moves_per_move) +
+                         " moves per programmed move (at least 1)");
+  }
   std::vector<JointVector> joints;
   RETURN_IF_ERROR(machine.AssignJoints(path, &joints));
   const std::vector<double> u = ProjectPathOntoRail(surface.rail(0), path);
   const std::vector<bool> beyond = PosesBeyondRailEnds(surface.rail(0), path, u);
-  *out = path;
   const size_t n = path.poses.size();
   std::vector<double> density(n, 0.0);
   for (size_t i = 0; i < n; ++i) density[i] = MoveErrorDensity(surface, u[i]);
@@ -84,14 +98,20 @@ Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Mac
     return !IsPositioningMove(pose) && !beyond[i] && !beyond[i - 1] &&
            pose.tool == path.poses[i - 1].tool;
   };
+  ToolPath stations = WithoutPoses(path);
   for (size_t first = 0; first < n;) {
     size_t last = first;
     while (last + 1 < n && continues(last + 1)) ++last;
-    if (last >= first + 2) {
-      SpaceStretch(path, joints, density, machine.kinematics, interpolation, first, last, out);
+    if (last >= first + 2 || (last == first + 1 && moves_per_move > 1)) {
+      SpaceStretch(path, joints, density, machine.kinematics, interpolation, first, last,
+                   moves_per_move, &stations);
+    } else {
+      stations.poses.insert(stations.poses.end(), path.poses.begin() + first,
+                            path.poses.begin() + last + 1);
     }
     first = last + 1;
   }
+  *out = std::move(stations);
   return Status::Ok();
 }
 

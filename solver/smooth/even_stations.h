@@ -15,8 +15,8 @@
 // rail's curvature and the turn of the ruling along it, so the steps go as
 // 1 / sqrt(M), M floored at its mean over the stretch (where the surface is
 // nearly flat, the steps are even in arc length). The stretch's first and
-// last poses stay where they are, and so does the pose count and every
-// block's place in the program.
+// last poses stay where they are, and (unless the moves are split, below)
+// so does the pose count and every block's place in the program.
 //
 // A stretch is a maximal run of cutting moves (no rapid, link or held
 // move: model/path/tool_path.h) of one tool between poses on the surface:
@@ -35,10 +35,14 @@ namespace tpopt {
 
 // `path` with the interior poses of each cutting stretch at the stations
 // above along its motion under `interpolation` on `machine`; only their tips
-// and axes (and the programmed joints they no longer have) change. Fails
-// only where `path`'s joints cannot be assigned (it must fit `machine`).
+// and axes (and the programmed joints they no longer have) change. With
+// `moves_per_move` > 1 each stretch of m moves gets m * moves_per_move, at
+// the same equal error: every moves_per_move-th pose is the program's (so
+// still one per block), and those between are new poses (Derived) of the
+// move into the next. Fails where `path`'s joints cannot be assigned (it
+// must fit `machine`) or moves_per_move < 1.
 Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Machine& machine,
-                    Interpolation interpolation, ToolPath* out);
+                    Interpolation interpolation, int moves_per_move, ToolPath* out);
 
 }  // namespace tpopt
 

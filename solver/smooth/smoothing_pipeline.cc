@@ -1102,7 +1102,7 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& stations,
 
 // SmoothWithOneCutter at the stations `settings` asks for.
 Status SmoothAtStations(const SmoothingJob& job, const SmoothingSettings& settings,
-                        SmoothingResult* result, ToolPath* guess_out) {
+                        int moves_per_move, SmoothingResult* result, ToolPath* guess_out) {
   if (guess_out != nullptr) *guess_out = *job.input;
   const bool high_accuracy = settings.mode == SmoothingMode::kHighAccuracy;
   const auto& poses = job.input->poses;
@@ -1126,14 +1126,15 @@ Status SmoothAtStations(const SmoothingJob& job, const SmoothingSettings& settin
   }
 
   // High accuracy with a surface solves at even stations along the input's
-  // motion; the input stays the judge.
+  // motion (split moves are placed so too); the input stays the judge.
   ToolPath even;
-  const bool even_stations =
-      high_accuracy && job.surface != nullptr && settings.even_stations;
+  const bool even_stations = high_accuracy && job.surface != nullptr && settings.even_stations;
   if (even_stations) {
-    run.Stage("placing the stations by their moves' error");
+    run.Stage(moves_per_move > 1 ? "placing the stations with each cutting move split in " +
+                                       std::to_string(moves_per_move)
+                                 : "placing the stations by their moves' error");
     Status s = EvenStations(*job.input, *job.surface, *job.machine,
-                            settings.deviation.interpolation, &even);
+                            settings.deviation.interpolation, moves_per_move, &even);
     if (!s.ok()) return Status::SolverFailure("even stations: " + s.message());
   }
   const ToolPath& stations = even_stations ? even : *job.input;
@@ -1160,6 +1161,7 @@ Status SmoothAtStations(const SmoothingJob& job, const SmoothingSettings& settin
     RETURN_IF_ERROR(run.FinishOutput());
   } else {
     result->even_stations = even_stations;
+    result->moves_per_move = even_stations ? moves_per_move : 1;
     RETURN_IF_ERROR(SolveHighAccuracy(run, stations, spline_path, guess_out));
   }
   result->output_metrics = result->output_at_input_feed;
@@ -1202,12 +1204,34 @@ Status KeepProgramAfterSolverFailure(const SmoothingJob& job, const SmoothingSet
 // programmed, where the never-worse rule is on (--keep_runs_no_worse).
 Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& settings,
                            SmoothingResult* result, ToolPath* guess_out) {
-  Status s = SmoothAtStations(job, settings, result, guess_out);
+  Status s = SmoothAtStations(job, settings, 1, result, guess_out);
   if (s.code() == StatusCode::kSolver && result->even_stations) {
     SmoothingSettings own = settings;
     own.even_stations = false;
     *result = SmoothingResult();
-    s = SmoothAtStations(job, own, result, guess_out);
+    s = SmoothAtStations(job, own, 1, result, guess_out);
+  }
+  const int most = std::min(settings.split_moves_for_tolerance, SmoothingSettings::kMaxSplitMoves);
+  // (Split stations are even stations: --even_stations=false keeps every
+  // solve at the program's own.)
+  const bool may_split = s.ok() && job.surface != nullptr && settings.even_stations &&
+                         settings.mode == SmoothingMode::kHighAccuracy &&
+                         !settings.accept_over_tolerance;
+  const int kept_at_program_moves = result->runs_kept_as_input;
+  // Each doubling doubles the solve; a program of many poses has short
+  // moves already (a 300-pose path split in four took over 15 minutes).
+  constexpr size_t kMostSplitPoses = 1000;
+  for (int split = 2; may_split && split <= most && result->runs_kept_as_input > 0 &&
+                      job.input->poses.size() * split <= kMostSplitPoses;
+       split *= 2) {
+    SmoothingResult finer;
+    ToolPath finer_guess;
+    if (SmoothAtStations(job, settings, split, &finer, &finer_guess).ok() &&
+        finer.runs_kept_as_input < result->runs_kept_as_input) {
+      finer.runs_kept_at_program_moves = kept_at_program_moves;
+      *result = std::move(finer);
+      if (guess_out != nullptr) *guess_out = std::move(finer_guess);
+    }
   }
   if (s.code() != StatusCode::kSolver || settings.mode != SmoothingMode::kHighAccuracy ||
       !settings.keep_runs_no_worse) {

@@ -160,6 +160,19 @@ struct SmoothingSettings {
   // stations. Off solves every pose where the program has it. A solve
   // refused at even stations is solved again at the program's own.
   bool even_stations = true;
+  // High accuracy held to the tolerance, with even_stations: where the solve puts runs back as
+  // programmed (for the tolerance, or rougher on d2), it is solved again at
+  // even stations with each cutting move between poses on the surface split
+  // in two, then, while runs still go back, in four and eight, up to this
+  // many; a result is kept where it puts fewer runs back (1: never). A
+  // move's error grows with the square of its length, and under joint
+  // interpolation a smooth path at the program's pose count could not hold
+  // the points where the programmed moves happened to be exact (README,
+  // "Random cases", stop 40). The split runs are written with the new poses
+  // between the programmed ones. A split is tried only while the input's
+  // pose count times it is at most 1000: each doubling doubles the solve.
+  int split_moves_for_tolerance = 4;
+  static constexpr int kMaxSplitMoves = 8;
   bool schedule_feed = true;
   FeedScheduleOptions feed;
   // Also the interpolation model of the high-accuracy cost (its
@@ -184,6 +197,12 @@ struct SmoothingResult {
   // (solver/smooth/even_stations.h); false: at the program's own, by
   // --even_stations=false, without a surface, or after a refusal there.
   bool even_stations = false;
+  // High accuracy: each cutting move of the kept solve's stations was split
+  // into this many (SmoothingSettings::split_moves_for_tolerance); 1: not.
+  int moves_per_move = 1;
+  // With moves_per_move > 1: the runs the solve at the program's own move
+  // count put back as programmed (more than runs_kept_as_input).
+  int runs_kept_at_program_moves = 0;
   PathMetrics output_at_input_feed;   // before feed scheduling
   PathMetrics output_metrics;         // as written
   // High accuracy: the tolerance unit of the solve, mm.
