@@ -200,8 +200,12 @@ TEST_F(BadInputMatrixTest, DegeneratePathsNeverCrashOrLeaveHalfFiles) {
     const std::string in = Write(row.name, row.contents);
     for (const std::string mode : {"spline", "high_accuracy"}) {
       const std::string out = dir_.File(row.name + "_" + mode + ".out.cls");
+      // Without split moves: their re-solves (tested on random cases) took
+      // these paths from 14 s to 126 s in Release, past the sanitizer run's
+      // time, and add no handling of bad input.
       const auto r = RunCommand(testing::TpoptBinary() + " smooth --quiet --mode=" + mode +
-                                " --in=" + in + " --out=" + out + " --surface=" + kBlade);
+                                " --split_moves_for_tolerance=1 --in=" + in + " --out=" + out +
+                                " --surface=" + kBlade);
       EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 1 || r.exit_code == 3)
           << row.name << " " << mode << ": exit " << r.exit_code << " " << r.output;
       // Repeated poses are common in CAM files and must smooth normally; a
