@@ -1201,7 +1201,10 @@ Status KeepProgramAfterSolverFailure(const SmoothingJob& job, const SmoothingSet
 // to fit (issue 16: no refusal where the input fits; on one of 200 random
 // cases under joint interpolation the solve at even stations moved a pose
 // out of the travel); one refused there too leaves the program as
-// programmed, where the never-worse rule is on (--keep_runs_no_worse).
+// programmed, where the never-worse rule is on (--keep_runs_no_worse). A
+// result that puts runs back as programmed is solved again with the moves
+// split (SmoothingSettings::split_moves_for_tolerance), and one that puts
+// fewer back is taken.
 Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& settings,
                            SmoothingResult* result, ToolPath* guess_out) {
   Status s = SmoothAtStations(job, settings, 1, result, guess_out);
