@@ -106,11 +106,10 @@ DEFINE_bool(even_stations, kSettings.even_stations,
 DEFINE_int32(split_moves_for_tolerance, kSettings.split_moves_for_tolerance,
              "smooth --mode=high_accuracy with a surface and --even_stations: where the solve "
              "puts cutting runs back as programmed (for the tolerance or their peak d2), solve "
-             "again at even "
-             "stations with each cutting move split in two, then while runs still go back in "
-             "four and eight, up to this many, keeping a result that puts fewer back; the "
-             "split runs are written with the new poses between the program's. 1-8 (1 = "
-             "never).");
+             "again at even stations with each cutting move split in two, then while runs "
+             "still go back in four and eight, up to this many, keeping a result that puts "
+             "fewer back; the split runs are written with the new poses between the "
+             "program's. 1-8 (1 = never).");
 DEFINE_bool(whole_surface, false,
             "Deviation grid over the whole surface (u in [0, 1]) instead of the u range the "
             "input covers; smooth judges its output on the same range as the input.");

@@ -102,12 +102,11 @@ Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Mac
   for (size_t first = 0; first < n;) {
     size_t last = first;
     while (last + 1 < n && continues(last + 1)) ++last;
-    if (last >= first + 2 || (last == first + 1 && moves_per_move > 1)) {
+    if (last > first) {
       SpaceStretch(path, joints, density, machine.kinematics, interpolation, first, last,
                    moves_per_move, &stations);
     } else {
-      stations.poses.insert(stations.poses.end(), path.poses.begin() + first,
-                            path.poses.begin() + last + 1);
+      stations.poses.push_back(path.poses[first]);
     }
     first = last + 1;
   }
