@@ -1,5 +1,5 @@
 // Coarse-to-fine solve: station choice, exact interpolation of what a
-// natural cubic spline can represent, and the same optimum as the direct
+// not-a-knot cubic spline can represent, and the same optimum as the direct
 // solve on a dense path.
 #include "solver/smooth/coarse_to_fine.h"
 
@@ -19,16 +19,18 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-// Poses at tip arc length s = 0.1 i along x, A and C linear in s, with a
-// rapid to a second run at pose 37.
-ToolPath LinearPath(int n) {
+// Poses at tip arc length s = 0.1 i along x, A and C linear in s (or, with
+// `bend`, cubic in s and curved at every end), with a rapid to a second run
+// at pose 37.
+ToolPath LinearPath(int n, double bend = 0.0) {
   ToolPath path;
   path.cutter = Cutter{4.0, 30.0, 0.0};
   for (int i = 0; i < n; ++i) {
     const double s = 0.1 * i;
     ToolPose p;
     p.p_w_tip = Eigen::Vector3d(s, 2.0, -1.0);
-    p.a_w = AnglesToAxis((20.0 + 0.5 * s) * kDeg, (-30.0 + 2.0 * s) * kDeg);
+    const double cubic = bend * (0.3 * s * s - 0.01 * s * s * s);
+    p.a_w = AnglesToAxis((20.0 + 0.5 * s + cubic) * kDeg, (-30.0 + 2.0 * s - cubic) * kDeg);
     p.rapid = i == 37;
     path.poses.push_back(p);
   }
@@ -52,6 +54,22 @@ TEST(CoarseStationsTest, KeepsRunEndsRapidTargetsAndEveryStridePose) {
   const ToolPath sub = SubPath(path, stations);
   for (size_t j = 0; j < stations.size(); ++j) {
     EXPECT_EQ(sub.poses[j].rapid, stations[j] == 37) << j;
+  }
+}
+
+// Joints cubic in the arc length and curved at the runs' ends, where a
+// natural spline would straighten them: the finer level's start would then
+// carry a false third derivative in every run's first and last step.
+TEST(InterpolateStationsTest, ReproducesJointsCubicInArcLength) {
+  Machine machine;
+  ASSERT_TRUE(
+      ReadMachineJson(testing::SourcePath("data/machines/jcde2022_ac.json"), &machine).ok());
+  const ToolPath fine = LinearPath(100, /*bend=*/1.0);
+  const std::vector<size_t> stations = CoarseStations(fine, 12);
+  ToolPath out;
+  ASSERT_TRUE(InterpolateStations(fine, stations, SubPath(fine, stations), machine, &out).ok());
+  for (size_t i = 0; i < fine.poses.size(); ++i) {
+    EXPECT_LT((out.poses[i].a_w - fine.poses[i].a_w).norm(), 1e-9) << i;
   }
 }
 

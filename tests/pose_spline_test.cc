@@ -54,7 +54,8 @@ TEST(PoseSplinePropertyTest, PassesThroughItsKnotsAtUnevenParameters) {
       std::vector<double> s = {gap(rng)};
       while (s.size() < indices.size()) s.push_back(s.back() + gap(rng));
       PoseSpline spline;
-      ASSERT_TRUE(PoseSpline::Fit(path, joints, indices, s, &spline).ok());
+      ASSERT_TRUE(
+          PoseSpline::Fit(path, joints, indices, s, PoseSpline::Ends::kNatural, &spline).ok());
       for (size_t k = 0; k < indices.size(); ++k) {
         const ToolPose& want = path.poses[indices[k]];
         ToolPose got;
@@ -87,7 +88,7 @@ TEST(PoseSplinePropertyTest, ReproducesPosesLinearInTheParameterBetweenKnots) {
     indices.push_back(i);
   }
   PoseSpline spline;
-  ASSERT_TRUE(PoseSpline::Fit(path, joints, indices, s, &spline).ok());
+  ASSERT_TRUE(PoseSpline::Fit(path, joints, indices, s, PoseSpline::Ends::kNatural, &spline).ok());
   for (double t = 0.0; t <= 8.0; t += 0.05) {
     ToolPose got;
     spline.Evaluate(t, &got);
@@ -101,7 +102,9 @@ TEST(PoseSplinePropertyTest, RefusesParametersThatDoNotIncrease) {
   std::vector<JointVector> joints;
   RandomPath(4, 9, &path, &joints);
   PoseSpline spline;
-  EXPECT_FALSE(PoseSpline::Fit(path, joints, {0, 1, 2, 3}, {0.0, 1.0, 1.0, 2.0}, &spline).ok());
+  EXPECT_FALSE(PoseSpline::Fit(path, joints, {0, 1, 2, 3}, {0.0, 1.0, 1.0, 2.0},
+                               PoseSpline::Ends::kNatural, &spline)
+                   .ok());
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 #include "solver/spline/smoothing_spline.h"
 
-#include <chrono>
-#include <random>
-
 #include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <random>
 
 namespace tpopt {
 namespace {
@@ -143,6 +145,52 @@ TEST(SmoothingSplineTest, ScalesLinearlyToAMillionPoints) {
   SmoothingSpline f;
   ASSERT_TRUE(SmoothingSpline::Fit(s, y, {}, 1.0, &f).ok());
   EXPECT_NEAR(f(5000.005), std::sin(5000.005), 1e-3);
+}
+
+// Not-a-knot ends hold any cubic exactly (a natural spline's would bend it
+// straight at the ends), with its derivatives; three points give the
+// parabola through them, two the line.
+TEST(SmoothingSplineTest, NotAKnotInterpolationIsExactOnCubics) {
+  const auto cubic = [](double x) { return 0.7 - 1.3 * x + 0.4 * x * x - 0.05 * x * x * x; };
+  for (int n : {4, 5, 9, 40}) {
+    const std::vector<double> s = Range(n, 0.37);
+    std::vector<double> y;
+    for (double x : s) y.push_back(cubic(x));
+    SmoothingSpline f;
+    ASSERT_TRUE(SmoothingSpline::InterpolateNotAKnot(s, y, &f).ok()) << n;
+    for (double x = s.front(); x <= s.back(); x += 0.013) {
+      const std::array<double, 4> v = f.Evaluate(x);
+      EXPECT_NEAR(v[0], cubic(x), 1e-12) << n << " " << x;
+      EXPECT_NEAR(v[1], -1.3 + 0.8 * x - 0.15 * x * x, 1e-11) << n << " " << x;
+      EXPECT_NEAR(v[2], 0.8 - 0.3 * x, 1e-10) << n << " " << x;
+      EXPECT_NEAR(v[3], -0.3, 1e-9) << n << " " << x;
+    }
+  }
+  SmoothingSpline parabola, line;
+  // (x - 1)^2 through three points.
+  ASSERT_TRUE(
+      SmoothingSpline::InterpolateNotAKnot({0.0, 0.5, 2.0}, {1.0, 0.25, 1.0}, &parabola).ok());
+  EXPECT_NEAR(parabola(1.0), 0.0, 1e-12);
+  EXPECT_NEAR(parabola(1.5), 0.25, 1e-12);
+  EXPECT_NEAR(parabola.Evaluate(1.7)[2], 2.0, 1e-12);
+  ASSERT_TRUE(SmoothingSpline::InterpolateNotAKnot({1.0, 3.0}, {2.0, 6.0}, &line).ok());
+  EXPECT_NEAR(line(2.5), 5.0, 1e-12);
+  EXPECT_FALSE(SmoothingSpline::InterpolateNotAKnot({0, 1, 1, 2}, {0, 0, 0, 0}, &line).ok());
+  EXPECT_FALSE(SmoothingSpline::InterpolateNotAKnot({0}, {0}, &line).ok());
+}
+
+// On data with curvature at its ends the natural spline is not exact near
+// them, which is what the not-a-knot interpolant is for.
+TEST(SmoothingSplineTest, NaturalEndsBendACubicThatNotAKnotEndsKeep) {
+  const std::vector<double> s = Range(12, 1.0);
+  std::vector<double> y;
+  for (double x : s) y.push_back(x * x);
+  SmoothingSpline natural, not_a_knot;
+  ASSERT_TRUE(SmoothingSpline::Fit(s, y, {}, 0.0, &natural).ok());
+  ASSERT_TRUE(SmoothingSpline::InterpolateNotAKnot(s, y, &not_a_knot).ok());
+  const double x = 0.5 * (s[0] + s[1]);
+  EXPECT_GT(std::abs(natural(x) - x * x), 1e-3);
+  EXPECT_NEAR(not_a_knot(x), x * x, 1e-12);
 }
 
 TEST(SmoothingSplineTest, RejectsBadInputNamingTheIndex) {

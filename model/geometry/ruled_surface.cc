@@ -6,10 +6,6 @@
 
 namespace tpopt {
 
-Eigen::Vector3d RuledSurface::Point(double u, double v) const {
-  return (1.0 - v) * rail0_.Point(u) + v * rail1_.Point(u);
-}
-
 Eigen::Vector3d RuledSurface::Du(double u, double v) const {
   return (1.0 - v) * rail0_.Evaluate(u, 1)[1] + v * rail1_.Evaluate(u, 1)[1];
 }

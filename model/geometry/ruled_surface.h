@@ -33,8 +33,16 @@ class RuledSurface {
   // +1 for kPositive, -1 for kNegative.
   double side_sign() const { return side_ == CutterSide::kPositive ? 1 : -1; }
 
+  // The ruling at u, from C1(u) (v = 0) to C2(u) (v = 1): many points of
+  // one ruling for two rail evaluations in all.
+  struct Ruling {
+    Eigen::Vector3d c1, c2;
+    Eigen::Vector3d Point(double v) const { return (1.0 - v) * c1 + v * c2; }
+  };
+  Ruling RulingAt(double u) const { return {rail0_.Point(u), rail1_.Point(u)}; }
+
   // Point in W, mm.
-  Eigen::Vector3d Point(double u, double v) const;
+  Eigen::Vector3d Point(double u, double v) const { return RulingAt(u).Point(v); }
   // Partial derivatives, mm per unit parameter.
   Eigen::Vector3d Du(double u, double v) const;
   Eigen::Vector3d Dv(double u) const;

@@ -108,11 +108,15 @@ std::vector<double> ProjectPathOntoRail(const BSplineCurve& rail, const ToolPath
   // From the tip's foot to the foot of the axis point at the run's overhang
   // (header). The overhang measured at the tip's foot is off by the foot's
   // error times the axis' lean along the rail; each pass shrinks that error
-  // by the same factor, and three leave nothing measurable.
-  for (int pass = 0; pass < 3; ++pass) {
+  // by the same factor, and three leave nothing measurable. A path whose
+  // tips are all on the floor needs none.
+  bool overhanging = true;
+  for (int pass = 0; pass < 3 && overhanging; ++pass) {
     const std::vector<double> overhang_mm = RunOverhangs(rail, path, u);
+    overhanging = false;
     for (size_t i = 0; i < path.poses.size(); ++i) {
       if (overhang_mm[i] <= kOnTheFloorMm) continue;
+      overhanging = true;
       const Eigen::Vector3d x = path.poses[i].p_w_tip + overhang_mm[i] * path.poses[i].a_w;
       u[i] = ProjectOntoCurve(rail, x, std::max(0.0, u[i] - window_u),
                               std::min(1.0, u[i] + window_u), 16);

@@ -1,29 +1,31 @@
 #include "solver/smooth/ceres_smoother.h"
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <sstream>
-#include <utility>
-
 #include <ceres/version.h>
 #include <glog/logging.h>
 
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <sstream>
+#include <utility>
+
+#include "model/base/invalid_field.h"
 #include "model/machine/axis_metrics.h"
 #include "model/machine/interpolation.h"
-#include "model/base/invalid_field.h"
 #include "model/path/rail_projection.h"
 #include "model/path/standing_moves.h"
 #include "solver/smooth/coarse_to_fine.h"
-#include "solver/smooth/ruling_angles.h"
 #include "solver/smooth/cost/axis_limit_cost.h"
 #include "solver/smooth/cost/deviation_cost.h"
-#include "solver/spline/overhang.h"
 #include "solver/smooth/cost/smoothness_cost.h"
 #include "solver/smooth/cost/tip_height_cost.h"
 #include "solver/smooth/cost/tolerance_band_cost.h"
 #include "solver/smooth/cost/wall_cost.h"
+#include "solver/smooth/ruling_angles.h"
+#include "solver/spline/overhang.h"
 
 namespace tpopt {
 namespace {
@@ -119,18 +121,33 @@ DeviationCost::Points RulingPoints(const RuledSurface& surface, double u,
   const int samples = o.ruling_samples;
   const double speed_mm = std::max(surface.rail(0).Evaluate(u, 1)[1].norm(), 1e-9);
   DeviationCost::Points points;
-  for (int k = 0; k < samples; ++k) points.contact_w.push_back(surface.Point(u, k / (samples - 1.0)));
-  const auto guard_at = [&](double distance_mm, double v) {
-    for (double side : {-1.0, 1.0}) {
-      const double ug = u + side * distance_mm / speed_mm;
-      if (ug >= 0.0 && ug <= 1.0) points.guard_w.push_back(surface.Point(ug, v));
+  const RuledSurface::Ruling contact = surface.RulingAt(u);
+  for (int k = 0; k < samples; ++k) points.contact_w.push_back(contact.Point(k / (samples - 1.0)));
+  // The guard rulings at each distance, either side (absent past an end),
+  // each evaluated once for its two or three points: the rails'
+  // evaluations were most of the time spent building a large problem.
+  using GuardRulings = std::array<std::optional<RuledSurface::Ruling>, 2>;
+  const auto rulings_at = [&](double distance_mm) {
+    GuardRulings g;
+    for (int k = 0; k < 2; ++k) {
+      const double ug = u + (k == 0 ? -1.0 : 1.0) * distance_mm / speed_mm;
+      if (ug >= 0.0 && ug <= 1.0) g[k] = surface.RulingAt(ug);
+    }
+    return g;
+  };
+  std::vector<GuardRulings> end_guards, guards;
+  for (double d : o.end_guard_distances_mm) end_guards.push_back(rulings_at(d));
+  for (double d : o.guard_distances_mm) guards.push_back(rulings_at(d));
+  const auto guard_at = [&](const GuardRulings& g, double v) {
+    for (const std::optional<RuledSurface::Ruling>& ruling : g) {
+      if (ruling) points.guard_w.push_back(ruling->Point(v));
     }
   };
   for (double v : {0.0, 0.5, 1.0}) {
     if (v != 0.5) {
-      for (double d : o.end_guard_distances_mm) guard_at(d, v);
+      for (const GuardRulings& g : end_guards) guard_at(g, v);
     }
-    for (double d : o.guard_distances_mm) guard_at(d, v);
+    for (const GuardRulings& g : guards) guard_at(g, v);
   }
   return points;
 }

@@ -31,7 +31,7 @@ Status ResampleRun(const ToolPath& in, const std::vector<JointVector>& joints, s
     return Status::Ok();
   }
   PoseSpline fit;
-  RETURN_IF_ERROR(PoseSpline::Fit(in, joints, kept, s, &fit));
+  RETURN_IF_ERROR(PoseSpline::Fit(in, joints, kept, s, PoseSpline::Ends::kNatural, &fit));
   const int steps = std::max(1, static_cast<int>(std::ceil(s.back() / step_mm - 1e-9)));
   size_t source = 0;  // the kept pose at or after the sample, for its feed
   for (int j = 0; j <= steps; ++j) {

@@ -20,13 +20,15 @@ std::vector<double> TipArcLength(const ToolPose* poses, size_t n, const ArcLengt
 }
 
 Status PoseSpline::Fit(const ToolPath& path, const std::vector<JointVector>& joints,
-                       const std::vector<size_t>& indices, const std::vector<double>& s,
+                       const std::vector<size_t>& indices, const std::vector<double>& s, Ends ends,
                        PoseSpline* out) {
   for (int k = 0; k < 5; ++k) {
     std::vector<double> y;
     y.reserve(indices.size());
     for (size_t i : indices) y.push_back(k < 3 ? path.poses[i].p_w_tip[k] : joints[i][k]);
-    RETURN_IF_ERROR(SmoothingSpline::Fit(s, y, {}, 0.0, &out->fit_[k]));
+    RETURN_IF_ERROR(ends == Ends::kNatural
+                        ? SmoothingSpline::Fit(s, y, {}, 0.0, &out->fit_[k])
+                        : SmoothingSpline::InterpolateNotAKnot(s, y, &out->fit_[k]));
   }
   return Status::Ok();
 }

@@ -1,7 +1,8 @@
-// Natural cubic splines through the tip (x, y, z) and the rotary joints
-// (A, C, unwrapped) of a run of poses, over a parameter s the caller
-// chooses (arc length). Spline in the joints rather than in the axis vector
-// so that the rotaries move smoothly between the poses it yields too.
+// Interpolating cubic splines through the tip (x, y, z) and the rotary
+// joints (A, C, unwrapped) of a run of poses, over a parameter s the caller
+// chooses (arc length), with natural or not-a-knot ends. Spline in the
+// joints rather than in the axis vector so that the rotaries move smoothly
+// between the poses it yields too.
 // Serves the output resampling (solver/smooth/resample.h) and the coarse-to-fine
 // high-accuracy solve (solver/smooth/coarse_to_fine.h).
 #ifndef TPOPT_SOLVER_POSE_SPLINE_H_
@@ -32,10 +33,15 @@ std::vector<double> TipArcLength(const ToolPose* poses, size_t n, const ArcLengt
 
 class PoseSpline {
  public:
+  enum class Ends {
+    kNatural,   // zero curvature at the ends
+    kNotAKnot,  // SmoothingSpline::InterpolateNotAKnot's
+  };
+
   // Interpolates poses `indices` of `path` (joints[i] the joint vector of
   // pose i) at the strictly increasing parameters `s`, one per index.
   static Status Fit(const ToolPath& path, const std::vector<JointVector>& joints,
-                    const std::vector<size_t>& indices, const std::vector<double>& s,
+                    const std::vector<size_t>& indices, const std::vector<double>& s, Ends ends,
                     PoseSpline* out);
 
   // Sets the tip and the axis of `pose` to the splines' values at s.

@@ -63,6 +63,54 @@ Status SmoothingSpline::Fit(const std::vector<double>& s, const std::vector<doub
   return Status::Ok();
 }
 
+Status SmoothingSpline::InterpolateNotAKnot(const std::vector<double>& s,
+                                            const std::vector<double>& y, SmoothingSpline* out) {
+  RETURN_IF_ERROR(CheckInputs(s, y, {}, 0.0));
+  const size_t n = s.size();
+  if (n == 2) return Fit(s, y, {}, 0.0, out);
+  std::vector<double> h(n - 1), slope(n - 1), m(n, 0.0);
+  for (size_t i = 0; i + 1 < n; ++i) {
+    h[i] = s[i + 1] - s[i];
+    slope[i] = (y[i + 1] - y[i]) / h[i];
+  }
+  if (n == 3) {
+    m.assign(3, 2.0 * (slope[1] - slope[0]) / (h[0] + h[1]));
+  } else {
+    // Continuity of f'' at the interior knots, h_i-1 m_i-1 + 2 (h_i-1 + h_i)
+    // m_i + h_i m_i+1 = 6 (slope_i - slope_i-1), for m_1..m_n-2, with m_0
+    // and m_n-1 eliminated by the continuity of f''' at knots 1 and n-2.
+    const size_t k = n - 2;
+    std::vector<double> sub(k), diag(k), super(k), rhs(k);
+    for (size_t r = 0; r < k; ++r) {
+      const size_t i = r + 1;
+      sub[r] = h[i - 1];
+      diag[r] = 2.0 * (h[i - 1] + h[i]);
+      super[r] = h[i];
+      rhs[r] = 6.0 * (slope[i] - slope[i - 1]);
+    }
+    const double first = h[0] / h[1], last = h[n - 2] / h[n - 3];
+    diag[0] += sub[0] * (1.0 + first);
+    super[0] -= sub[0] * first;
+    diag[k - 1] += super[k - 1] * (1.0 + last);
+    sub[k - 1] -= super[k - 1] * last;
+    // Thomas' algorithm (the rows stay diagonally dominant).
+    for (size_t r = 1; r < k; ++r) {
+      const double w = sub[r] / diag[r - 1];
+      diag[r] -= w * super[r - 1];
+      rhs[r] -= w * rhs[r - 1];
+    }
+    m[k] = rhs[k - 1] / diag[k - 1];
+    for (size_t r = k - 1; r-- > 0;) m[r + 1] = (rhs[r] - super[r] * m[r + 2]) / diag[r];
+    m[0] = (1.0 + first) * m[1] - first * m[2];
+    m[n - 1] = (1.0 + last) * m[n - 2] - last * m[n - 3];
+  }
+  out->s_ = std::make_shared<const std::vector<double>>(s);
+  out->f_ = y;
+  out->gamma_ = std::move(m);
+  out->smoothing_ = 0.0;
+  return Status::Ok();
+}
+
 Status SmoothingSpline::FitWithinTolerance(const std::vector<double>& s,
                                            const std::vector<double>& y,
                                            const std::vector<double>& weights, double tolerance,

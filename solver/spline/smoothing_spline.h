@@ -2,7 +2,9 @@
 //   sum_i w_i (y_i - f(s_i))^2 + lambda * integral f''(s)^2 ds
 // over strictly increasing abscissae s_i. lambda = 0 interpolates. Solved in
 // O(n) from the banded system (R + lambda Q^T W^-1 Q) gamma = Q^T y of Green
-// & Silverman, where gamma are the second derivatives at the knots.
+// & Silverman, where gamma are the second derivatives at the knots. The
+// same representation also holds the not-a-knot interpolant
+// (InterpolateNotAKnot), whose end second derivatives are not zero.
 //
 // The smoothing is set by a dimensionless `smoothing` p with
 // lambda = p * h^3, h the mean knot spacing: f'' ~ y / h^2 at the scale of
@@ -44,8 +46,17 @@ class SmoothingSpline {
                                        const std::vector<double>& weights, double tolerance,
                                        const std::vector<SmoothingSpline*>& outs);
 
-  // f, f', f'', f''' at s (clamped to the fitted range: beyond it the
-  // natural spline is linear, and so is this).
+  // Interpolates with not-a-knot ends: the first two intervals are one
+  // cubic, and so are the last two (three points: one parabola). Where the
+  // data's curve bends at its ends, a natural spline's zero curvature there
+  // puts a false bend into the end intervals, the whole third derivative
+  // the coarse-to-fine solve's finer level then pays to remove. Same
+  // preconditions as Fit without weights.
+  static Status InterpolateNotAKnot(const std::vector<double>& s, const std::vector<double>& y,
+                                    SmoothingSpline* out);
+
+  // f, f', f'', f''' at s (clamped to the fitted range: beyond it linear,
+  // as a natural spline is).
   std::array<double, 4> Evaluate(double s) const;
   double operator()(double s) const { return Evaluate(s)[0]; }
 
