@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -184,6 +185,32 @@ void AddStencils(const ToolPath& path, const std::vector<bool>& free_pose, Stenc
   }
 }
 
+// Queues `cost` (over pose i alone) for the pose's stacked block.
+void AddPosePart(SmoothingState* state, size_t i, const std::string& family,
+                 ceres::CostFunction* cost) {
+  state->pose_parts[i].push_back({family, cost});
+}
+
+// One residual block a pose for its queued parts: the part itself where it
+// is alone, else their StackedCost.
+void AddPoseParts(SmoothingState* state, ceres::Problem* problem) {
+  for (size_t i = 0; i < state->pose_parts.size(); ++i) {
+    std::vector<SmoothingState::PosePart>& parts = state->pose_parts[i];
+    if (parts.size() == 1) {
+      state->families[parts[0].family].push_back(
+          problem->AddResidualBlock(parts[0].cost, nullptr, state->poses[i].data()));
+    } else if (parts.size() > 1) {
+      auto* block = new StackedCost;
+      for (size_t k = 0; k < parts.size(); ++k) {
+        block->Add(std::unique_ptr<ceres::CostFunction>(parts[k].cost));
+        state->stacked_parts.push_back({parts[k].family, block, k, i});
+      }
+      problem->AddResidualBlock(block, nullptr, state->poses[i].data());
+    }
+    parts.clear();
+  }
+}
+
 template <int kOrder>
 void AddLimitFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
                     const std::vector<bool>& free_pose, SmoothingState* state,
@@ -225,10 +252,10 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
       // ruling like the pose that cuts it, it was pulled millimetres along
       // the path onto it. It is only kept out of the surface there.
       const double h = PoseShareMm(*state, i);
-      state->families["deviation"].push_back(problem->AddResidualBlock(
+      AddPosePart(
+          state, i, "deviation",
           DeviationCost::CreateAtPose(EndRulingGuards(*in.surface, state->u[i], o), settings,
-                                      std::sqrt(o.w_deviation * h / (length_mm * m))),
-          nullptr, state->poses[i].data()));
+                                      std::sqrt(o.w_deviation * h / (length_mm * m))));
       continue;
     }
     // (A move to or from beyond the ends holds no ruling of its own; below,
@@ -242,12 +269,11 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
     const int parts = forward_cut ? parts_of_move(i) : 1;
     // The pose stands for half a part of each neighbouring move.
     const double h_pose = back / (2.0 * (back_cut ? parts_of_move(i - 1) : 1)) + ahead / (2.0 * parts);
-    std::vector<ceres::ResidualBlockId>& ids = state->families["deviation"];
-    ids.push_back(problem->AddResidualBlock(
-        DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], o), settings,
-                                    std::sqrt(o.w_deviation * h_pose / (length_mm * m))),
-        nullptr, state->poses[i].data()));
+    AddPosePart(state, i, "deviation",
+                DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], o), settings,
+                                            std::sqrt(o.w_deviation * h_pose / (length_mm * m))));
     if (!forward_cut) continue;
+    std::vector<ceres::ResidualBlockId>& ids = state->families["deviation"];
     for (int k = 1; k < parts; ++k) {
       const double lambda = static_cast<double>(k) / parts;
       const double u = (1 - lambda) * state->u[i] + lambda * state->u[i + 1];
@@ -382,8 +408,7 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
 // the machine's linear travel and, with a surface, the cone round the
 // input's axis and the cutter's side of the surface.
 void AddWallFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
-                   const std::vector<bool>& free_pose, SmoothingState* state,
-                   ceres::Problem* problem) {
+                   const std::vector<bool>& free_pose, SmoothingState* state) {
   if (o.w_walls <= 0) return;
   const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
@@ -413,8 +438,7 @@ void AddWallFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, doub
       walls.side.emplace(ends, scale);
     }
     if (!walls.travel && !walls.cone) continue;
-    state->families["walls"].push_back(
-        problem->AddResidualBlock(new WallCost(walls), nullptr, state->poses[i].data()));
+    AddPosePart(state, i, "walls", new WallCost(walls));
   }
 }
 
@@ -652,9 +676,8 @@ void AddPoseBlocks(const SmoothingInputs& in, const std::vector<bool>& free_pose
 
 // With a surface, each free pose's tip held at the input's overhang below
 // the floor (solver/smooth/cost/tip_height_cost.h).
-Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
-                          double length_mm, const std::vector<bool>& free_pose,
-                          SmoothingState* state, ceres::Problem* problem) {
+Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
+                          const std::vector<bool>& free_pose, SmoothingState* state) {
   const ToolPath& path = *in.input;
   const size_t n = path.poses.size();
   std::vector<double> overhang_mm;
@@ -667,10 +690,9 @@ Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& 
     }
     const double h = PoseShareMm(*state, i);
     const Eigen::Vector3d floor_w = in.surface->rail(0).Point(state->u[i]);
-    state->families["tip_height"].push_back(problem->AddResidualBlock(
-        TipHeightCost::Create(floor_w, overhang_mm[i],
-                              std::sqrt(o.w_tip_height * h / length_mm) / o.tolerance_mm),
-        nullptr, state->poses[i].data()));
+    AddPosePart(state, i, "tip_height",
+                TipHeightCost::Create(floor_w, overhang_mm[i],
+                                      std::sqrt(o.w_tip_height * h / length_mm) / o.tolerance_mm));
   }
   return Status::Ok();
 }
@@ -747,15 +769,17 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   const double length_mm = std::max(state->s_mm.back(), kMinStep);
   const std::vector<bool> free_pose = FreePoses(in);
   AddPoseBlocks(in, free_pose, state, problem);
+  state->pose_parts.assign(in.input->poses.size(), {});
   if (in.surface == nullptr) {
     AddToleranceFamily(in, o, length_mm, free_pose, state, problem);
   } else {
     AddDeviationFamily(in, o, length_mm, free_pose, state, problem);
     AddLeadBandFamily(in, o, length_mm, free_pose, state, problem);
   }
-  AddWallFamily(in, o, length_mm, free_pose, state, problem);
+  AddWallFamily(in, o, length_mm, free_pose, state);
   AddTolerancePoints(in, o, free_pose, state, problem);
-  RETURN_IF_ERROR(AddTipHeightFamily(in, o, length_mm, free_pose, state, problem));
+  RETURN_IF_ERROR(AddTipHeightFamily(in, o, length_mm, free_pose, state));
+  AddPoseParts(state, problem);
   AddSmoothnessFamilies(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<1>(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<2>(in, o, length_mm, free_pose, state, problem);
@@ -886,6 +910,9 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
     double cost = 0.0;
     problem.Evaluate(eval, &cost, nullptr, nullptr, nullptr);
     report->final_cost_by_family[family] = cost;
+  }
+  for (const SmoothingState::StackedPart& p : state.stacked_parts) {
+    report->final_cost_by_family[p.family] += p.block->PartCost(p.part, state.poses[p.pose].data());
   }
   *out = *inputs.input;
   const std::vector<bool> free_pose = FreePoses(inputs);

@@ -10,11 +10,16 @@
 //   second      solver/smooth/cost/smoothness_cost.h    d2/ds2 of A, C and the tip
 //   third       solver/smooth/cost/smoothness_cost.h    d3/ds3 of A, C and the tip
 //   limits      solver/smooth/cost/axis_limit_cost.h    axis velocity/acceleration/jerk
+//   walls       solver/smooth/cost/wall_cost.h          travel, axis cone, cutter's side
 // Every family is scaled as an integral over the arc length s of the contact
 // curve (rail 0 at u_i) divided by its length, so a weight means the same at
-// any point density.
+// any point density. The costs of one pose alone (its deviation at the
+// pose, walls, tip height) share one residual block a pose
+// (solver/smooth/cost/stacked_cost.h); the reports still split them by family.
 #ifndef TPOPT_SOLVER_CERES_SMOOTHER_H_
 #define TPOPT_SOLVER_CERES_SMOOTHER_H_
+
+#include <ceres/ceres.h>
 
 #include <array>
 #include <cmath>
@@ -23,14 +28,13 @@
 #include <string>
 #include <vector>
 
-#include <ceres/ceres.h>
-
+#include "model/base/status.h"
 #include "model/cutter/cutter.h"
+#include "model/geometry/ruled_surface.h"
 #include "model/machine/interpolation.h"
 #include "model/machine/machine.h"
-#include "model/geometry/ruled_surface.h"
-#include "model/base/status.h"
 #include "model/path/tool_path.h"
+#include "solver/smooth/cost/stacked_cost.h"
 
 namespace tpopt {
 
@@ -228,6 +232,22 @@ struct SmoothingState {
   std::vector<double> t_s;                   // planned time at programmed feed
   // Residual blocks of each family, for per-family cost reports.
   std::map<std::string, std::vector<ceres::ResidualBlockId>> families;
+  // The costs of one pose alone (its deviation at the pose, walls, tip
+  // gauge), per pose, made one residual block a pose when the problem is
+  // complete (solver/smooth/cost/stacked_cost.h); Ceres takes them over.
+  struct PosePart {
+    std::string family;
+    ceres::CostFunction* cost;
+  };
+  std::vector<std::vector<PosePart>> pose_parts;
+  // Where each family's parts ended up in those blocks, for the reports.
+  struct StackedPart {
+    std::string family;
+    const StackedCost* block;
+    size_t part;
+    size_t pose;
+  };
+  std::vector<StackedPart> stacked_parts;
 };
 
 struct HighAccuracyReport {
