@@ -94,6 +94,34 @@ TEST_F(CeresSmootherTest, SmoothsAnInjectedSpikeAndBeatsDpoOnDeviation) {
   EXPECT_GT(report.iterations, 0);
 }
 
+// The families' costs add up to the solve's (each residual block counted
+// once, the pose's own costs split out of their shared block), with points
+// inside the moves and without (every move shorter than
+// between_min_move_mm: no deviation block but the poses' own).
+TEST_F(CeresSmootherTest, FamilyCostsAddUpToTheFinalCost) {
+  ToolPath guess;
+  SplineSmootherReport spline_report;
+  ASSERT_TRUE(SmoothWithSplines(spiked_, machine_, &surface_, cutter_, SplineSmootherOptions(),
+                                &guess, &spline_report)
+                  .ok());
+  for (double between_min_move_mm : {0.1, 1e6}) {
+    HighAccuracyOptions options;
+    options.between_min_move_mm = between_min_move_mm;
+    const SmoothingInputs inputs{&spiked_, &guess, &surface_, &cutter_, &machine_};
+    ToolPath out;
+    HighAccuracyReport report;
+    ASSERT_TRUE(SolveWholeProblem(inputs, options, &out, &report).ok());
+    double sum = 0.0;
+    for (const auto& [family, cost] : report.final_cost_by_family) sum += cost;
+    EXPECT_NEAR(sum, report.final_cost, 1e-9 * report.final_cost) << between_min_move_mm;
+    for (const char* family : {"deviation", "walls", "tip_height", "second", "third"}) {
+      EXPECT_EQ(report.final_cost_by_family.count(family), 1u) << family;
+    }
+    EXPECT_GT(report.final_cost_by_family.at("deviation"), 0.0);
+    EXPECT_LT(report.final_cost_by_family.at("deviation"), report.final_cost);
+  }
+}
+
 TEST_F(CeresSmootherTest, IsDeterministic) {
   HighAccuracyReport r1, r2;
   const ToolPath a = Smooth(spiked_, &r1), b = Smooth(spiked_, &r2);

@@ -153,7 +153,9 @@ TEST(SmoothingSplineTest, ScalesLinearlyToAMillionPoints) {
 TEST(SmoothingSplineTest, NotAKnotInterpolationIsExactOnCubics) {
   const auto cubic = [](double x) { return 0.7 - 1.3 * x + 0.4 * x * x - 0.05 * x * x * x; };
   for (int n : {4, 5, 9, 40}) {
-    const std::vector<double> s = Range(n, 0.37);
+    // Steps of 0.2-0.5, unequal at both ends (h0 != h1, h_n-2 != h_n-3).
+    std::vector<double> s = {0.0};
+    for (int i = 0; i + 1 < n; ++i) s.push_back(s.back() + 0.2 + 0.3 * ((i * 7 + n) % 5) / 4.0);
     std::vector<double> y;
     for (double x : s) y.push_back(cubic(x));
     SmoothingSpline f;
@@ -181,7 +183,7 @@ TEST(SmoothingSplineTest, NotAKnotInterpolationIsExactOnCubics) {
 
 // On data with curvature at its ends the natural spline is not exact near
 // them, which is what the not-a-knot interpolant is for.
-TEST(SmoothingSplineTest, NaturalEndsBendACubicThatNotAKnotEndsKeep) {
+TEST(SmoothingSplineTest, NaturalEndsBendAParabolaThatNotAKnotEndsKeep) {
   const std::vector<double> s = Range(12, 1.0);
   std::vector<double> y;
   for (double x : s) y.push_back(x * x);

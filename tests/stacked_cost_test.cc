@@ -17,11 +17,17 @@ std::unique_ptr<ceres::CostFunction> TipHeight(double scale) {
   return std::unique_ptr<ceres::CostFunction>(TipHeightCost::Create({5, 5, 3.25}, 0.4, scale));
 }
 
-std::unique_ptr<ceres::CostFunction> Cone() {
-  // A cone of 12 deg round an axis the pose below leaves by about 20 deg,
-  // so the wall acts and its Jacobian is not zero.
+// Three rows: a cone of 12 deg round an axis the pose below leaves by about
+// 20 deg, so that wall acts and its Jacobian is not zero, and the cutter's
+// side of the plane z = 0.
+std::unique_ptr<ceres::CostFunction> ConeAndSide() {
   WallCost::Walls walls;
   walls.cone.emplace(AnglesToAxis(0.1, 0.3), 12 * M_PI / 180, 2.0);
+  walls.side.emplace(
+      std::array<SurfaceSideCost::End, 2>{
+          SurfaceSideCost::End{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 0, 1), 4.0},
+          SurfaceSideCost::End{Eigen::Vector3d(0, 30, 0), Eigen::Vector3d(0, 0, 1), 4.0}},
+      2.0);
   return std::make_unique<WallCost>(walls);
 }
 
@@ -33,17 +39,17 @@ TEST(StackedCostTest, IsThePartsStackedRowByRow) {
   const double* params[] = {pose.data()};
   std::vector<std::unique_ptr<ceres::CostFunction>> alone;
   alone.push_back(TipHeight(2.0));
-  alone.push_back(Cone());
+  alone.push_back(ConeAndSide());
   alone.push_back(TipHeight(0.5));
   StackedCost stacked;
   stacked.Add(TipHeight(2.0));
-  stacked.Add(Cone());
+  stacked.Add(ConeAndSide());
   stacked.Add(TipHeight(0.5));
   ASSERT_EQ(stacked.parts(), 3u);
-  ASSERT_EQ(stacked.num_residuals(), 3);
+  ASSERT_EQ(stacked.num_residuals(), 5);
   ASSERT_EQ(stacked.parameter_block_sizes(), std::vector<int32_t>{kPoseSize});
 
-  std::vector<double> r(3), j(3 * kPoseSize);
+  std::vector<double> r(5), j(5 * kPoseSize);
   double* jacobians[] = {j.data()};
   ASSERT_TRUE(stacked.Evaluate(params, r.data(), jacobians));
   int row = 0;
@@ -60,7 +66,7 @@ TEST(StackedCostTest, IsThePartsStackedRowByRow) {
         EXPECT_EQ(j[(row + i) * kPoseSize + c], jk[i * kPoseSize + c]) << k << " " << c;
       }
     }
-    EXPECT_GT(cost, 0.0) << k;
+    EXPECT_GT(cost, 0.0) << k;  // every part acts, so a misplaced row shows
     // (A wall computes its value in double without Jacobians and with Jets
     // with them: the two agree to the last bits, not to every bit.)
     EXPECT_NEAR(stacked.PartCost(k, pose.data()), cost, 1e-12 * cost) << k;
@@ -69,15 +75,15 @@ TEST(StackedCostTest, IsThePartsStackedRowByRow) {
   // Without Jacobians, and with a constant block's null Jacobian.
   double* no_block[] = {nullptr};
   for (double** jacobians_or_none : {static_cast<double**>(nullptr), no_block}) {
-    std::vector<double> r_only(3);
+    std::vector<double> r_only(5);
     ASSERT_TRUE(stacked.Evaluate(params, r_only.data(), jacobians_or_none));
-    for (int i = 0; i < 3; ++i) EXPECT_NEAR(r_only[i], r[i], 1e-12 * std::abs(r[i])) << i;
+    for (int i = 0; i < 5; ++i) EXPECT_NEAR(r_only[i], r[i], 1e-12 * std::abs(r[i])) << i;
   }
   testing::ExpectJacobiansMatchNumeric(
       [] {
         auto* s = new StackedCost;
         s->Add(TipHeight(2.0));
-        s->Add(Cone());
+        s->Add(ConeAndSide());
         return s;
       }(),
       {pose.data()});

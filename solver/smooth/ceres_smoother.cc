@@ -188,7 +188,7 @@ void AddStencils(const ToolPath& path, const std::vector<bool>& free_pose, Stenc
 // Queues `cost` (over pose i alone) for the pose's stacked block.
 void AddPosePart(SmoothingState* state, size_t i, const std::string& family,
                  ceres::CostFunction* cost) {
-  state->pose_parts[i].push_back({family, cost});
+  state->pose_parts[i].push_back({family, std::unique_ptr<ceres::CostFunction>(cost)});
 }
 
 // One residual block a pose for its queued parts: the part itself where it
@@ -198,14 +198,14 @@ void AddPoseParts(SmoothingState* state, ceres::Problem* problem) {
     std::vector<SmoothingState::PosePart>& parts = state->pose_parts[i];
     if (parts.size() == 1) {
       state->families[parts[0].family].push_back(
-          problem->AddResidualBlock(parts[0].cost, nullptr, state->poses[i].data()));
+          problem->AddResidualBlock(parts[0].cost.release(), nullptr, state->poses[i].data()));
     } else if (parts.size() > 1) {
-      auto* block = new StackedCost;
+      auto block = std::make_unique<StackedCost>();
       for (size_t k = 0; k < parts.size(); ++k) {
-        block->Add(std::unique_ptr<ceres::CostFunction>(parts[k].cost));
-        state->stacked_parts.push_back({parts[k].family, block, k, i});
+        block->Add(std::move(parts[k].cost));
+        state->stacked_parts.push_back({parts[k].family, block.get(), k, i});
       }
-      problem->AddResidualBlock(block, nullptr, state->poses[i].data());
+      problem->AddResidualBlock(block.release(), nullptr, state->poses[i].data());
     }
     parts.clear();
   }
@@ -273,15 +273,14 @@ void AddDeviationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o,
                 DeviationCost::CreateAtPose(RulingPoints(*in.surface, state->u[i], o), settings,
                                             std::sqrt(o.w_deviation * h_pose / (length_mm * m))));
     if (!forward_cut) continue;
-    std::vector<ceres::ResidualBlockId>& ids = state->families["deviation"];
     for (int k = 1; k < parts; ++k) {
       const double lambda = static_cast<double>(k) / parts;
       const double u = (1 - lambda) * state->u[i] + lambda * state->u[i + 1];
       const double scale = std::sqrt(o.w_deviation * ahead / parts / (length_mm * m));
-      ids.push_back(problem->AddResidualBlock(
-          DeviationCost::CreateBetweenPoses(
-              RulingPoints(*in.surface, u, o), settings, scale, lambda),
-          nullptr, state->poses[i].data(), state->poses[i + 1].data()));
+      state->families["deviation"].push_back(
+          problem->AddResidualBlock(DeviationCost::CreateBetweenPoses(
+                                        RulingPoints(*in.surface, u, o), settings, scale, lambda),
+                                    nullptr, state->poses[i].data(), state->poses[i + 1].data()));
     }
   }
   // A move between a lead pose and the pose that cuts the end ruling sweeps
@@ -769,7 +768,9 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   const double length_mm = std::max(state->s_mm.back(), kMinStep);
   const std::vector<bool> free_pose = FreePoses(in);
   AddPoseBlocks(in, free_pose, state, problem);
-  state->pose_parts.assign(in.input->poses.size(), {});
+  state->pose_parts.clear();
+  state->pose_parts.resize(in.input->poses.size());
+  state->stacked_parts.clear();
   if (in.surface == nullptr) {
     AddToleranceFamily(in, o, length_mm, free_pose, state, problem);
   } else {
@@ -904,16 +905,20 @@ Status SolveWholeProblem(const SmoothingInputs& inputs, const HighAccuracyOption
   report->iterations = static_cast<int>(summary.iterations.size()) - 1;
   report->initial_cost = summary.initial_cost;
   report->final_cost = summary.final_cost;
+  std::map<std::string, double> cost_by_family;
   for (const auto& [family, blocks] : state.families) {
+    // (An empty list would make Ceres evaluate every block.)
+    if (blocks.empty()) continue;
     ceres::Problem::EvaluateOptions eval;
     eval.residual_blocks = blocks;
     double cost = 0.0;
     problem.Evaluate(eval, &cost, nullptr, nullptr, nullptr);
-    report->final_cost_by_family[family] = cost;
+    cost_by_family[family] = cost;
   }
   for (const SmoothingState::StackedPart& p : state.stacked_parts) {
-    report->final_cost_by_family[p.family] += p.block->PartCost(p.part, state.poses[p.pose].data());
+    cost_by_family[p.family] += p.block->PartCost(p.part, state.poses[p.pose].data());
   }
+  report->final_cost_by_family = std::move(cost_by_family);
   *out = *inputs.input;
   const std::vector<bool> free_pose = FreePoses(inputs);
   const ToolPath& guess = inputs.initial_guess ? *inputs.initial_guess : *inputs.input;

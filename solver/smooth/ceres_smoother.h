@@ -25,6 +25,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -234,10 +235,11 @@ struct SmoothingState {
   std::map<std::string, std::vector<ceres::ResidualBlockId>> families;
   // The costs of one pose alone (its deviation at the pose, walls, tip
   // gauge), per pose, made one residual block a pose when the problem is
-  // complete (solver/smooth/cost/stacked_cost.h); Ceres takes them over.
+  // complete (solver/smooth/cost/stacked_cost.h), when Ceres takes them
+  // over.
   struct PosePart {
     std::string family;
-    ceres::CostFunction* cost;
+    std::unique_ptr<ceres::CostFunction> cost;
   };
   std::vector<std::vector<PosePart>> pose_parts;
   // Where each family's parts ended up in those blocks, for the reports.

@@ -30,7 +30,7 @@ std::vector<size_t> CoarseStations(const ToolPath& path, size_t target);
 // CoarseStations every move keeps its rapid flag.
 ToolPath SubPath(const ToolPath& path, const std::vector<size_t>& indices);
 
-// `fine` with each pose between stations moved onto natural cubic splines
+// `fine` with each pose between stations moved onto not-a-knot cubic splines
 // (solver/spline/pose_spline.h) through the solved stations `coarse` (pose j of
 // `coarse` belongs at fine pose stations[j]), run by run, over the fine
 // path's tip arc length. Stations take their solved pose exactly.

@@ -208,7 +208,8 @@ std::array<double, 4> SmoothingSpline::Evaluate(double x) const {
   const double g0 = gamma_[i], g1 = gamma_[i + 1];
   const double b = (f_[i + 1] - f_[i]) / h - h * (2 * g0 + g1) / 6.0;
   if (x < s.front() || x > s.back()) {
-    // Natural spline: linear beyond the ends (gamma = 0 there).
+    // Linear beyond the ends, along the end slope (as a natural spline,
+    // whose gamma is 0 there, is).
     const bool before = x < s.front();
     const double x0 = before ? s.front() : s.back();
     const auto at_end = Evaluate(x0);

@@ -55,8 +55,8 @@ class SmoothingSpline {
   static Status InterpolateNotAKnot(const std::vector<double>& s, const std::vector<double>& y,
                                     SmoothingSpline* out);
 
-  // f, f', f'', f''' at s (clamped to the fitted range: beyond it linear,
-  // as a natural spline is).
+  // f, f', f'', f''' at s; beyond the fitted range, the straight line along
+  // the end's slope (as a natural spline is).
   std::array<double, 4> Evaluate(double s) const;
   double operator()(double s) const { return Evaluate(s)[0]; }
 
