@@ -33,6 +33,18 @@ struct Cutter {
   }
 };
 
+// A cutter's shape as the distance functions below evaluate it, with its
+// taper's tangent and cosine worked out once, not at every point: the
+// optimiser and the judge measure millions of points against one cutter.
+struct FlankShape {
+  explicit FlankShape(const Cutter& cutter)
+      : radius_mm(cutter.radius_mm),
+        half_flute_mm(0.5 * cutter.flute_length_mm),
+        tan_taper(std::tan(cutter.taper_rad)),
+        cos_taper(std::cos(cutter.taper_rad)) {}
+  double radius_mm, half_flute_mm, tan_taper, cos_taper;
+};
+
 // Signed distance (mm) from point q to the cutter placed at `tip` with unit
 // `axis`, all in one frame, as the deviation of a wall point: within the
 // flute's height range (0 <= t <= flute length) it is the distance to the
@@ -43,10 +55,8 @@ struct Cutter {
 // Templated on the scalar so that Ceres residuals can differentiate through
 // it.
 template <typename T>
-T SignedDistanceToCutter(const Cutter& cutter,
-                         const Eigen::Matrix<T, 3, 1>& q,
-                         const Eigen::Matrix<T, 3, 1>& tip,
-                         const Eigen::Matrix<T, 3, 1>& axis) {
+T SignedDistanceToCutter(const FlankShape& flank, const Eigen::Matrix<T, 3, 1>& q,
+                         const Eigen::Matrix<T, 3, 1>& tip, const Eigen::Matrix<T, 3, 1>& axis) {
   using std::abs;
   using std::sqrt;
   const Eigen::Matrix<T, 3, 1> d = q - tip;
@@ -54,16 +64,20 @@ T SignedDistanceToCutter(const Cutter& cutter,
   const T r2 = (d - t * axis).squaredNorm();
   // sqrt is not differentiable at 0; a point on the axis is deep inside.
   const T r = r2 > T(1e-24) ? T(sqrt(r2)) : T(0.0);
-  const double tan_taper = std::tan(cutter.taper_rad);
-  const double cos_taper = std::cos(cutter.taper_rad);
-  const T half_length = T(0.5 * cutter.flute_length_mm);
+  const T half_length = T(flank.half_flute_mm);
   // Radial distance to the flank measured normal to it, and axial distance
   // to the nearer cap.
-  const T radial = (r - (T(cutter.radius_mm) + t * tan_taper)) * cos_taper;
+  const T radial = (r - (T(flank.radius_mm) + t * flank.tan_taper)) * flank.cos_taper;
   const T axial = abs(t - half_length) - half_length;
   if (axial <= T(0.0)) return radial;
   if (radial <= T(0.0)) return axial;
   return T(sqrt(radial * radial + axial * axial));
+}
+
+template <typename T>
+T SignedDistanceToCutter(const Cutter& cutter, const Eigen::Matrix<T, 3, 1>& q,
+                         const Eigen::Matrix<T, 3, 1>& tip, const Eigen::Matrix<T, 3, 1>& axis) {
+  return SignedDistanceToCutter<T>(FlankShape(cutter), q, tip, axis);
 }
 
 // Signed distance (mm) from q to the cutter's flank surface extended past
@@ -72,16 +86,20 @@ T SignedDistanceToCutter(const Cutter& cutter,
 // what an optimiser needs; the caps are handled by keeping the tip at the
 // contact rail (see solver/smooth/cost/tip_height_cost.h).
 template <typename T>
-T SignedDistanceToFlank(const Cutter& cutter, const Eigen::Matrix<T, 3, 1>& q,
-                        const Eigen::Matrix<T, 3, 1>& tip,
-                        const Eigen::Matrix<T, 3, 1>& axis) {
+T SignedDistanceToFlank(const FlankShape& flank, const Eigen::Matrix<T, 3, 1>& q,
+                        const Eigen::Matrix<T, 3, 1>& tip, const Eigen::Matrix<T, 3, 1>& axis) {
   using std::sqrt;
   const Eigen::Matrix<T, 3, 1> d = q - tip;
   const T t = d.dot(axis);
   const T r2 = (d - t * axis).squaredNorm();
   const T r = r2 > T(1e-24) ? T(sqrt(r2)) : T(0.0);
-  return (r - (T(cutter.radius_mm) + t * std::tan(cutter.taper_rad))) *
-         std::cos(cutter.taper_rad);
+  return (r - (T(flank.radius_mm) + t * flank.tan_taper)) * flank.cos_taper;
+}
+
+template <typename T>
+T SignedDistanceToFlank(const Cutter& cutter, const Eigen::Matrix<T, 3, 1>& q,
+                        const Eigen::Matrix<T, 3, 1>& tip, const Eigen::Matrix<T, 3, 1>& axis) {
+  return SignedDistanceToFlank<T>(FlankShape(cutter), q, tip, axis);
 }
 
 }  // namespace tpopt

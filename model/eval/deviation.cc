@@ -344,11 +344,13 @@ class SweptDistance {
  public:
   // cutters[m] cuts move m.
   SweptDistance(const Motion& motion, const std::vector<const Cutter*>& cutters, int substeps)
-      : motion_(motion), cutters_(cutters), bound_(cutters) {
+      : motion_(motion), bound_(cutters) {
     CHECK_EQ(static_cast<int>(cutters.size()), motion.num_moves());
     moves_.reserve(motion.num_moves());
+    flanks_.reserve(motion.num_moves());
     for (int m = 0; m < motion.num_moves(); ++m) {
       moves_.push_back(PrepareMove(motion, *cutters[m], m, substeps));
+      flanks_.emplace_back(*cutters[m]);
     }
     nodes_.reserve(2 * moves_.size());
     BuildBvh(moves_, 0, static_cast<int>(moves_.size()) - 1, &nodes_);
@@ -366,13 +368,13 @@ class SweptDistance {
   double DistanceAt(int move, double s, const Eigen::Vector3d& q) const {
     Eigen::Vector3d tip, axis;
     motion_.PoseAt(move, s, &tip, &axis);
-    return SignedDistanceToCutter<double>(*cutters_[move], q, tip, axis);
+    return SignedDistanceToCutter<double>(flanks_[move], q, tip, axis);
   }
   double LeastOverMove(int move, const Eigen::Vector3d& q,
                        double to_beat) const;
 
   const Motion& motion_;
-  const std::vector<const Cutter*>& cutters_;
+  std::vector<FlankShape> flanks_;  // flanks_[m] cuts move m
   DistanceBound bound_;
   std::vector<PreparedMove> moves_;
   std::vector<BvhNode> nodes_;
@@ -391,7 +393,7 @@ double SweptDistance::LeastOverMove(int move, const Eigen::Vector3d& q,
   std::vector<double> value(count + 1);
   double best = to_beat;
   for (int k = 0; k <= count; ++k) {
-    value[k] = SignedDistanceToCutter<double>(*cutters_[move], q, m.tips[k], m.axes[k]);
+    value[k] = SignedDistanceToCutter<double>(flanks_[move], q, m.tips[k], m.axes[k]);
     best = std::min(best, value[k]);
   }
   std::vector<std::pair<double, int>> minima;
@@ -583,6 +585,8 @@ Status EvaluateBrute(const RuledSurface& surface, const Cutter& cutter,
   }
   std::vector<const Cutter*> cutters;
   RETURN_IF_ERROR(MoveCutters(cutter, path, motion, options, &cutters));
+  std::vector<FlankShape> flanks;
+  for (const Cutter* c : cutters) flanks.emplace_back(*c);
   auto least = [&](const Eigen::Vector3d& q) {
     double best = kInf;
     for (int m = 0; m < motion.num_moves(); ++m) {
@@ -590,8 +594,7 @@ Status EvaluateBrute(const RuledSurface& surface, const Cutter& cutter,
         Eigen::Vector3d tip, axis;
         motion.PoseAt(m, static_cast<double>(k) / substeps_per_move, &tip,
                       &axis);
-        best = std::min(best,
-                        SignedDistanceToCutter<double>(*cutters[m], q, tip, axis));
+        best = std::min(best, SignedDistanceToCutter<double>(flanks[m], q, tip, axis));
       }
     }
     return best;

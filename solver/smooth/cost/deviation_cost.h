@@ -70,7 +70,11 @@ class DeviationCost {
 
   // scale = sqrt(w h / (L n)); lambda: fraction of the move (two-pose form).
   DeviationCost(Points points, const Settings& settings, double scale, double lambda = 0.0)
-      : points_(std::move(points)), settings_(settings), scale_(scale), lambda_(lambda) {}
+      : points_(std::move(points)),
+        settings_(settings),
+        flank_(settings.cutter),
+        scale_(scale),
+        lambda_(lambda) {}
 
   template <typename T>
   bool operator()(const T* const pose, T* r) const {
@@ -111,7 +115,7 @@ class DeviationCost {
                  T* r) const {
     const double unit = scale_ / settings_.tolerance_mm;
     for (const Eigen::Vector3d& q : points_.contact_w) {
-      T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis);
+      T d = SignedDistanceToFlank<T>(flank_, q.cast<T>(), tip, axis);
       const double band = settings_.dead_band_mm;
       if (band > 0.0) d = d > T(band) ? d - T(band) : d < T(-band) ? d + T(band) : T(0.0);
       *r++ = T(unit * (d < T(0.0) ? settings_.overcut_factor : 1.0)) * d;
@@ -122,11 +126,11 @@ class DeviationCost {
     const Eigen::Vector3d tip_value = ValueOf(tip), axis_value = ValueOf(axis);
     const double band = settings_.dead_band_mm;
     for (const Eigen::Vector3d& q : points_.guard_w) {
-      if (SignedDistanceToFlank<double>(settings_.cutter, q, tip_value, axis_value) >= -band) {
+      if (SignedDistanceToFlank<double>(flank_, q, tip_value, axis_value) >= -band) {
         *r++ = T(0.0);
         continue;
       }
-      const T d = SignedDistanceToFlank<T>(settings_.cutter, q.cast<T>(), tip, axis) + T(band);
+      const T d = SignedDistanceToFlank<T>(flank_, q.cast<T>(), tip, axis) + T(band);
       *r++ = d < T(0.0) ? T(unit * settings_.overcut_factor) * d : T(0.0);
     }
   }
@@ -143,6 +147,7 @@ class DeviationCost {
 
   Points points_;
   Settings settings_;
+  FlankShape flank_;
   double scale_;
   double lambda_;
 };
