@@ -670,6 +670,31 @@ TEST(HighAccuracyRandomCasesTest, PeakDeviationRoundsLowerTheWorstPoint) {
   EXPECT_LE(PromiseExcessOnPipelineGridMm(c, u_min, u_max, result.output), 0.0);
 }
 
+// A stiffer solve raises the smoothness weights ten-fold at once, and the
+// path it ends on can be far smoother than asked and farther off the
+// surface than need be; the last step is eased back towards the result
+// before it (SolveStiffer, LowerPeaksOfStifferOrEased). Seed 113 of the
+// benchmark: stiff, 0.75 x the clean DPO path's max |dev| with peak d2
+// 1.5 x the clean SPO path's; eased, below 0.7 x with both still within
+// 2 x and the tolerance promise kept.
+TEST(HighAccuracyRandomCasesTest, TheLastStifferStepIsEasedBackWhereThatIsNearerTheSurface) {
+  RandomCase c;
+  SmoothingResult result;
+  MakeAndSmooth(113, &c, &result);
+  double u_min = 0, u_max = 0;
+  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
+  EXPECT_GE(result.stiffer_solves, 1);
+  EXPECT_EQ(result.stiffer_solves_eased, 1);
+  EXPECT_EQ(result.runs_kept_as_input, 0);
+  const double dpo_mm = WorstMm(Brute(c, c.clean_dpo, u_min, u_max));
+  EXPECT_LE(WorstMm(Brute(c, result.output, u_min, u_max)), 0.7 * dpo_mm);
+  const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
+  const std::array<double, 2> out = PeakSecond(c.machine, result.output);
+  EXPECT_LE(out[0], 2 * spo[0]);
+  EXPECT_LE(out[1], 2 * spo[1]);
+  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, u_min, u_max, result.output), 0.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Passing, HighAccuracyRandomCasesTest,
                          ::testing::Values(2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 13u,
                                            14u, 15u, 16u, 17u, 18u, 19u, 20u, 21u, 22u, 23u,
