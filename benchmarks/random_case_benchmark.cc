@@ -122,9 +122,9 @@ Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
   // What shaped the result: runs the never-worse rule put back as the
   // input's (with the input's deviation), and solves repeated stiffer.
   row.message = "runs kept as input " + std::to_string(result.runs_kept_as_input) +
-                ", stiffer solves " + std::to_string(result.stiffer_solves) + " (" +
-                std::to_string(result.stiffer_solves_eased) + " eased)" +
-                ", peak-deviation rounds " + std::to_string(result.peak_deviation_rounds);
+                ", stiffer solves " + std::to_string(result.stiffer_solves) + ", last eased " +
+                std::to_string(result.stiffer_solves_eased) + ", peak-deviation rounds " +
+                std::to_string(result.peak_deviation_rounds);
   for (const KeptRun& kept : result.runs_kept) {
     char why[200];
     std::snprintf(why, sizeof(why), "; poses %d-%d %s%s %.3g->%.3g at u %.3f v %.3f",

@@ -680,7 +680,7 @@ TEST(HighAccuracyRandomCasesTest, PeakDeviationRoundsLowerTheWorstPoint) {
 TEST(HighAccuracyRandomCasesTest, TheLastStifferStepIsEasedBackWhereThatIsNearerTheSurface) {
   RandomCase c;
   SmoothingResult result;
-  MakeAndSmooth(113, &c, &result);
+  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(113, &c, &result));
   double u_min = 0, u_max = 0;
   ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
   EXPECT_GE(result.stiffer_solves, 1);

@@ -720,10 +720,11 @@ std::array<double, 2> RoughFlank(const SmoothingSettings& settings,
 
 // Whether `result` is a path the stiffer solves could end on, no worse than
 // `stiff` (the last of them): within the tolerance where held to it, no
-// run worse than the input that `stiff` had not, no rougher than the cap
-// or `stiff`, and nearer the surface than `stiff`.
+// run worse than the input that `stiff` had not, no rougher (over the flank
+// path's peaks `flank`) than the cap or `stiff`, and nearer the surface
+// than `stiff`.
 bool EasesStiffer(const SmoothingRun& run, const HeldSolve& held, double tolerance_mm,
-                  const std::array<double, 2>& rough_flank, const SmoothingResult& stiff,
+                  const std::array<double, 2>& flank, const SmoothingResult& stiff,
                   const std::vector<bool>& stiff_worse) {
   const SmoothingResult& result = *run.result;
   if (held.held_to_tolerance &&
@@ -740,8 +741,8 @@ bool EasesStiffer(const SmoothingRun& run, const HeldSolve& held, double toleran
   for (size_t r = 0; r < worse.size(); ++r) {
     if (worse[r] && !stiff_worse[r]) return false;
   }
-  return RoughnessOver(result, rough_flank) <=
-             std::max(run.settings.stiffer_above_flank_d2, RoughnessOver(stiff, rough_flank)) &&
+  return RoughnessOver(result, flank) <=
+             std::max(run.settings.stiffer_above_flank_d2, RoughnessOver(stiff, flank)) &&
          WorstDeviationMm(result.output_at_input_feed) <
              WorstDeviationMm(stiff.output_at_input_feed);
 }
@@ -755,7 +756,7 @@ bool EasesStiffer(const SmoothingRun& run, const HeldSolve& held, double toleran
 // for the farthest that EasesStiffer, which is taken; false (and the result
 // as it was) where none does.
 bool EaseLastStiffer(const SmoothingRun& run, const HeldSolve& held, double tolerance_mm,
-                     const std::array<double, 2>& rough_flank, const SmoothingResult& before) {
+                     const std::array<double, 2>& flank, const SmoothingResult& before) {
   constexpr int kEaseSteps = 3;
   SmoothingResult* result = run.result;
   const SmoothingResult stiff = *result;
@@ -767,7 +768,7 @@ bool EaseLastStiffer(const SmoothingRun& run, const HeldSolve& held, double tole
     const double t = 0.5 * (eases + fails);
     result->output = Blend(stiff.output, before.output, t);
     if (run.FinishOutput().ok() &&
-        EasesStiffer(run, held, tolerance_mm, rough_flank, stiff, stiff_worse)) {
+        EasesStiffer(run, held, tolerance_mm, flank, stiff, stiff_worse)) {
       eased = *result;
       eases = t;
     } else {
@@ -797,7 +798,8 @@ bool EaseLastStiffer(const SmoothingRun& run, const HeldSolve& held, double tole
 // alone and does not come nearer them or leaves the surface more than
 // twice as far off, is not taken; with neither taken the last result
 // stays (and `*options` the weights it was solved with), and the put-back
-// then has the final word. `flank`: FlankPathPeaks.
+// then has the final word. `flank`: FlankPathPeaks. `*before_last_step`
+// receives the result before the last step taken, if any.
 void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
                   HighAccuracyOptions* options, HeldSolve* held,
                   std::optional<SmoothingResult>* before_last_step) {
@@ -989,13 +991,14 @@ void LowerPeaksOfStifferOrEased(const SmoothingRun& run, const HighAccuracyOptio
   const SmoothingResult stiff = *result;
   const std::vector<TolerancePoint> stiff_active = held->active;
   LowerPeakDeviation(run, options, flank, held);
-  if (!before_last_step) return;
+  // Like the peak rounds, a blend has a promise to keep only when held to
+  // the tolerance.
+  if (!before_last_step || !held->held_to_tolerance) return;
   const SmoothingResult from_stiff = *result;
   const std::vector<TolerancePoint> from_stiff_active = held->active;
   *result = stiff;
   held->active = stiff_active;
-  if (EaseLastStiffer(run, *held, options.tolerance_mm, RoughFlank(run.settings, flank),
-                      *before_last_step)) {
+  if (EaseLastStiffer(run, *held, options.tolerance_mm, flank, *before_last_step)) {
     LowerPeakDeviation(run, options, flank, held);
     if (WorstDeviationMm(result->output_at_input_feed) <
         (1 - kEaseGain) * WorstDeviationMm(from_stiff.output_at_input_feed)) {

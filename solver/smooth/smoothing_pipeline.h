@@ -228,8 +228,8 @@ struct SmoothingResult {
   // weights raised because a run came out worse on peak d2 than the input's
   // (each kept only if held to the tolerance).
   int stiffer_solves = 0;
-  // Of those, how often the path was eased back towards the result before
-  // the last (SolveStiffer).
+  // Whether (1) or not (0) the last stiffer step was eased back towards the
+  // result before it, a piece each (LowerPeaksOfStifferOrEased).
   int stiffer_solves_eased = 0;
   // High accuracy with a surface: the peak-deviation rounds kept
   // (SmoothingSettings::peak_deviation_rounds).
