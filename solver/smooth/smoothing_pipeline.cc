@@ -697,6 +697,20 @@ bool RunsWorseThanInput(const SmoothingRun& run, const NoWorseOn& on, const Tool
                          run.settings.feed.default_feed_mm_per_min, on, &composed, worse);
 }
 
+// Whether `path` leaves worse than the input (RunsWorseThanInput) no run
+// but those `worse_before` flags, the runs pairing up as they did.
+bool MakesNoRunWorse(const SmoothingRun& run, const NoWorseOn& on, const ToolPath& path,
+                     const std::vector<bool>& worse_before) {
+  std::vector<bool> worse;
+  if (!RunsWorseThanInput(run, on, path, &worse) || worse.size() != worse_before.size()) {
+    return false;
+  }
+  for (size_t r = 0; r < worse.size(); ++r) {
+    if (worse[r] && !worse_before[r]) return false;
+  }
+  return true;
+}
+
 // The path a fraction t of the way from `from` to `to` (the same poses):
 // each tip along the line between the two, each axis along the arc. A pose
 // the two share (held, a rapid, a link) stays exactly as it is.
@@ -711,15 +725,8 @@ ToolPath Blend(const ToolPath& from, const ToolPath& to, double t) {
   return out;
 }
 
-// The flank path's peaks as the stiffer solves measure roughness against
-// them: with the factor at 0 they ask for no stiffer solve.
-std::array<double, 2> RoughFlank(const SmoothingSettings& settings,
-                                 const std::array<double, 2>& flank) {
-  return settings.stiffer_above_flank_d2 > 0 ? flank : std::array<double, 2>{INFINITY, INFINITY};
-}
-
 // Whether `result` is a path the stiffer solves could end on, no worse than
-// `stiff` (the last of them): within the tolerance where held to it, no
+// `stiff` (the last of them): within the tolerance (the solve is held to it), no
 // run worse than the input that `stiff` had not, no rougher (over the flank
 // path's peaks `flank`) than the cap or `stiff`, and nearer the surface
 // than `stiff`.
@@ -727,20 +734,12 @@ bool EasesStiffer(const SmoothingRun& run, const HeldSolve& held, double toleran
                   const std::array<double, 2>& flank, const SmoothingResult& stiff,
                   const std::vector<bool>& stiff_worse) {
   const SmoothingResult& result = *run.result;
-  if (held.held_to_tolerance &&
-      !BeyondTolerance(run.input_allowance_mm, *result.output_at_input_feed.deviation, tolerance_mm,
+  if (!BeyondTolerance(run.input_allowance_mm, *result.output_at_input_feed.deviation, tolerance_mm,
                        kSameMovesSlackMm)
            .empty()) {
     return false;
   }
-  std::vector<bool> worse;
-  if (!RunsWorseThanInput(run, held.no_worse, result.output, &worse) ||
-      worse.size() != stiff_worse.size()) {
-    return false;
-  }
-  for (size_t r = 0; r < worse.size(); ++r) {
-    if (worse[r] && !stiff_worse[r]) return false;
-  }
+  if (!MakesNoRunWorse(run, held.no_worse, result.output, stiff_worse)) return false;
   return RoughnessOver(result, flank) <=
              std::max(run.settings.stiffer_above_flank_d2, RoughnessOver(stiff, flank)) &&
          WorstDeviationMm(result.output_at_input_feed) <
@@ -817,7 +816,9 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
   // inputs point to it again on return.
   const ToolPath* const first_start = held->inputs.initial_guess;
   const double rough_factor = settings.stiffer_above_flank_d2;
-  const std::array<double, 2> rough_flank = RoughFlank(settings, flank);
+  // With the factor at 0 the flank path's peaks ask for no stiffer solve.
+  const std::array<double, 2> rough_flank =
+      rough_factor > 0 ? flank : std::array<double, 2>{INFINITY, INFINITY};
   for (int k = 0; k < std::min(settings.stiffer_solves, SmoothingSettings::kMaxStifferSolves) &&
                   settings.keep_runs_no_worse && job.surface != nullptr &&
                   settings.resample_step_mm <= 0 && held->beyond_runs.empty();
@@ -953,13 +954,7 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
             continue;
           }
         }
-        std::vector<bool> worse;
-        bool made_worse = !RunsWorseThanInput(run, held->no_worse, result->output, &worse) ||
-                          worse.size() != worse_before.size();
-        for (size_t r = 0; !made_worse && r < worse.size(); ++r) {
-          made_worse = worse[r] && !worse_before[r];
-        }
-        taken = !made_worse &&
+        taken = MakesNoRunWorse(run, held->no_worse, result->output, worse_before) &&
                 WorstDeviationMm(result->output_at_input_feed) < (1 - kPeakGain) * worst &&
                 RoughnessOver(*result, flank) <= std::max(roughness, rough_cap);
         if (taken) break;
