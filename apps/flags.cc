@@ -211,7 +211,7 @@ DEFINE_int32(stiffer_solves, kSettings.stiffer_solves,
 DEFINE_int32(peak_deviation_rounds, kSettings.peak_deviation_rounds,
              "smooth: high_accuracy with a surface solves again up to this many times to lower "
              "the result's worst deviation, holding the grid points farther than half of it (on "
-             "every other grid line); "
+             "every other grid line; 0.7 of it where nothing at half is kept); "
              "each round kept only where it keeps the tolerance and roughens no axis beyond "
              "--stiffer_above_flank_d2 times the flank path's (0 = none, faster).");
 DEFINE_bool(accept_over_tolerance, kSettings.accept_over_tolerance,

@@ -197,6 +197,23 @@ void ExpectIssueTargets(unsigned seed, D2Bound d2_bound,
                                  << " deg from its input's";
 }
 
+// A result that meets issue 16's 0.7 x target, with no run put back: max
+// |dev| (brute force, on the input's covered range) within 0.7 x the clean
+// DPO path's, both peak d2 within 2 x the clean SPO path's, and the
+// tolerance promise kept.
+void ExpectWithinSevenTenthsOfDpo(const RandomCase& c, const SmoothingResult& result) {
+  double u_min = 0, u_max = 0;
+  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
+  EXPECT_EQ(result.runs_kept_as_input, 0);
+  const double dpo_mm = WorstMm(Brute(c, c.clean_dpo, u_min, u_max));
+  EXPECT_LE(WorstMm(Brute(c, result.output, u_min, u_max)), 0.7 * dpo_mm);
+  const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
+  const std::array<double, 2> out = PeakSecond(c.machine, result.output);
+  EXPECT_LE(out[0], 2 * spo[0]);
+  EXPECT_LE(out[1], 2 * spo[1]);
+  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, u_min, u_max, result.output), 0.0);
+}
+
 class HighAccuracyRandomCasesTest : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
@@ -681,19 +698,30 @@ TEST(HighAccuracyRandomCasesTest, TheLastStifferStepIsEasedBackWhereThatIsNearer
   RandomCase c;
   SmoothingResult result;
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(113, &c, &result));
-  double u_min = 0, u_max = 0;
-  ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
   EXPECT_GE(result.stiffer_solves, 1);
   EXPECT_EQ(result.stiffer_solves_eased, 1);
-  EXPECT_EQ(result.runs_kept_as_input, 0);
-  const double dpo_mm = WorstMm(Brute(c, c.clean_dpo, u_min, u_max));
-  EXPECT_LE(WorstMm(Brute(c, result.output, u_min, u_max)), 0.7 * dpo_mm);
-  const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
-  const std::array<double, 2> out = PeakSecond(c.machine, result.output);
-  EXPECT_LE(out[0], 2 * spo[0]);
-  EXPECT_LE(out[1], 2 * spo[1]);
-  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, u_min, u_max, result.output), 0.0);
+  ExpectWithinSevenTenthsOfDpo(c, result);
 }
+
+// Held at half the worst deviation, a peak round's points can pull the
+// solve's axes 5-20 x as hard as the flank path's, and every blend of it
+// is refused; the round is then tried with the points held at 0.7 of the
+// worst (LowerPeakDeviation). Seeds 74, 136 and 198 of the benchmark: at
+// half alone no round was taken and they ended at 0.74, 0.77 and 0.77 x
+// the clean DPO path's max |dev|; now below 0.7 x, both peak d2 within
+// 2 x the clean SPO path's and the tolerance promise kept.
+class PeakRoundAtAMilderBoundTest : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(PeakRoundAtAMilderBoundTest, IsTakenWhereTheRoundAtHalfTheWorstIsRefused) {
+  RandomCase c;
+  SmoothingResult result;
+  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(GetParam(), &c, &result));
+  EXPECT_GE(result.peak_deviation_rounds, 1);
+  ExpectWithinSevenTenthsOfDpo(c, result);
+}
+
+INSTANTIATE_TEST_SUITE_P(RandomCases, PeakRoundAtAMilderBoundTest,
+                         ::testing::Values(74u, 136u, 198u));
 
 INSTANTIATE_TEST_SUITE_P(Passing, HighAccuracyRandomCasesTest,
                          ::testing::Values(2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 13u,

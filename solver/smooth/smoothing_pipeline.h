@@ -137,14 +137,15 @@ struct SmoothingSettings {
   // deviation after the solve (0 = none). Least squares spreads the
   // deviation, and its peak stays where the smoothness and the surface
   // disagree most; each round holds the grid points farther than half the
-  // worst (on every other grid line, and the worst point) within that
-  // bound and solves again from the result, and keeps what it made, or a
-  // blend of it with the result before, only where that lowers the worst
-  // deviation, keeps the tolerance, makes no run worse on peak d2 than the
-  // input's (as keep_runs_no_worse judges) and leaves the peak d2 within
+  // worst (on every other grid line, and the worst point; 0.7 of it where
+  // nothing at half is kept) within that bound and solves again from the
+  // result, and keeps what it made, or a blend of it with the result
+  // before, only where that lowers the worst deviation, keeps the
+  // tolerance, makes no run worse on peak d2 than the input's (as
+  // keep_runs_no_worse judges) and leaves the peak d2 within
   // stiffer_above_flank_d2 times the flank path's (or no rougher than
-  // before). Each round costs a solve (README, "Random cases", stops 32
-  // and 33).
+  // before). Each round costs a solve, or two (README, "Random cases",
+  // stops 32, 33 and 44).
   // No round runs with accept_over_tolerance, where there is no promise
   // for a blend to keep.
   int peak_deviation_rounds = 2;
