@@ -151,6 +151,7 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
   report["stiffer_solves"] = result.stiffer_solves;
   report["stiffer_solves_eased"] = result.stiffer_solves_eased;
   report["peak_deviation_rounds"] = result.peak_deviation_rounds;
+  report["peak_rounds_at_milder_bound"] = result.peak_rounds_at_milder_bound;
   report["lead_poses_continued"] = result.lead_poses_continued;
   report["even_stations"] = result.even_stations;
   report["moves_per_move"] = result.moves_per_move;

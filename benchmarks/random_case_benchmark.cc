@@ -124,7 +124,8 @@ Row RunCase(const RandomCase& c, const Config& config, const PathMetrics& dpo,
   row.message = "runs kept as input " + std::to_string(result.runs_kept_as_input) +
                 ", stiffer solves " + std::to_string(result.stiffer_solves) + ", last eased " +
                 std::to_string(result.stiffer_solves_eased) + ", peak-deviation rounds " +
-                std::to_string(result.peak_deviation_rounds);
+                std::to_string(result.peak_deviation_rounds) + " (at 0.7 " +
+                std::to_string(result.peak_rounds_at_milder_bound) + ")";
   for (const KeptRun& kept : result.runs_kept) {
     char why[200];
     std::snprintf(why, sizeof(why), "; poses %d-%d %s%s %.3g->%.3g at u %.3f v %.3f",

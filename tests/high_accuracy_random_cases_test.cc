@@ -656,7 +656,8 @@ TEST(HighAccuracyRandomCasesPutBackTest, AxesRougherThanTheSurfacesOwnFlankPathA
 // and 20 since the guard rulings at 0.15 mm at the rulings' ends, stop 30).
 // Least squares leaves the deviation's peak where the smoothness and the
 // surface disagree most; the peak-deviation rounds (SmoothingSettings::
-// peak_deviation_rounds) hold the grid points beyond half of it lower.
+// peak_deviation_rounds) hold the grid points beyond half of it (or 0.7
+// of it) lower.
 // Seed 66 of the benchmark: without them its worst point is 1.3 x the
 // clean DPO path's max |dev|; with them below 0.7 x, both peak d2 within
 // 2 x the clean SPO path's and the tolerance promise kept.
@@ -667,7 +668,6 @@ TEST(HighAccuracyRandomCasesTest, PeakDeviationRoundsLowerTheWorstPoint) {
   double u_min = 0, u_max = 0;
   ASSERT_TRUE(CoveredRangeU(c.surface, c.cam_path, &u_min, &u_max));
   const double dpo_mm = WorstMm(Brute(c, c.clean_dpo, u_min, u_max));
-  const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
   SmoothingSettings settings = AsTheIssueJudges();
   settings.peak_deviation_rounds = 0;
   SmoothingResult without;
@@ -679,12 +679,7 @@ TEST(HighAccuracyRandomCasesTest, PeakDeviationRoundsLowerTheWorstPoint) {
   SmoothingResult result;
   ASSERT_TRUE(testing::SmoothRandomCase(c, settings, &result).ok());
   EXPECT_GE(result.peak_deviation_rounds, 1);
-  EXPECT_EQ(result.runs_kept_as_input, 0);
-  EXPECT_LE(WorstMm(Brute(c, result.output, u_min, u_max)), 0.7 * dpo_mm);
-  const std::array<double, 2> out = PeakSecond(c.machine, result.output);
-  EXPECT_LE(out[0], 2 * spo[0]);
-  EXPECT_LE(out[1], 2 * spo[1]);
-  EXPECT_LE(PromiseExcessOnPipelineGridMm(c, u_min, u_max, result.output), 0.0);
+  ASSERT_NO_FATAL_FAILURE(ExpectWithinSevenTenthsOfDpo(c, result));
 }
 
 // A stiffer solve raises the smoothness weights ten-fold at once, and the
@@ -700,24 +695,26 @@ TEST(HighAccuracyRandomCasesTest, TheLastStifferStepIsEasedBackWhereThatIsNearer
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(113, &c, &result));
   EXPECT_GE(result.stiffer_solves, 1);
   EXPECT_EQ(result.stiffer_solves_eased, 1);
-  ExpectWithinSevenTenthsOfDpo(c, result);
+  ASSERT_NO_FATAL_FAILURE(ExpectWithinSevenTenthsOfDpo(c, result));
 }
 
 // Held at half the worst deviation, a peak round's points can pull the
-// solve's axes 5-20 x as hard as the flank path's, and every blend of it
+// solve's axes 5-21 x as hard as the flank path's, and every blend of it
 // is refused; the round is then tried with the points held at 0.7 of the
 // worst (LowerPeakDeviation). Seeds 74, 136 and 198 of the benchmark: at
 // half alone no round was taken and they ended at 0.74, 0.77 and 0.77 x
-// the clean DPO path's max |dev|; now below 0.7 x, both peak d2 within
-// 2 x the clean SPO path's and the tolerance promise kept.
+// the clean DPO path's max |dev| (the benchmark's judge); now a round is
+// taken at 0.7, and they end below 0.7 x (this test's brute-force judge;
+// 74 was below it there already, at half alone), both peak d2 within 2 x
+// the clean SPO path's and the tolerance promise kept.
 class PeakRoundAtAMilderBoundTest : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(PeakRoundAtAMilderBoundTest, IsTakenWhereTheRoundAtHalfTheWorstIsRefused) {
   RandomCase c;
   SmoothingResult result;
   ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(GetParam(), &c, &result));
-  EXPECT_GE(result.peak_deviation_rounds, 1);
-  ExpectWithinSevenTenthsOfDpo(c, result);
+  EXPECT_GE(result.peak_rounds_at_milder_bound, 1);
+  ASSERT_NO_FATAL_FAILURE(ExpectWithinSevenTenthsOfDpo(c, result));
 }
 
 INSTANTIATE_TEST_SUITE_P(RandomCases, PeakRoundAtAMilderBoundTest,

@@ -911,8 +911,8 @@ std::vector<size_t> PeakRoundPoints(const DeviationReport& out, double bound_mm)
 // peak d2 comes down with it; on the random cases the half blend kept most
 // of the gain, seed 50: 0.105 -> 0.057 mm, its peak d2 lower than either
 // path's). Held at half the worst, the points pull so hard that on some
-// cases the solve's path bends 5-20 x the flank path's peak d2 and every
-// blend is refused; held at 0.7 of it, the same round is taken there
+// cases the solve's path bends 5-21 x the flank path's peak d2 and every
+// blend is refused; held at 0.7 of it, the round is taken on some of them
 // (README, "Random cases", stop 44). A round that lowers the peak by less
 // than kPeakGain at every fraction is the last. `flank`: FlankPathPeaks.
 void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& options,
@@ -920,7 +920,10 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
   const SmoothingJob& job = run.job;
   SmoothingResult* result = run.result;
   if (job.surface == nullptr || !held->held_to_tolerance || !held->beyond_runs.empty()) return;
+  // Ascending: the first is the lowest bound, the one the early return
+  // below checks.
   constexpr double kPeakBoundFractions[] = {0.5, 0.7};
+  static_assert(kPeakBoundFractions[0] < kPeakBoundFractions[1]);
   constexpr double kPeakBlends[] = {1.0, 0.5, 0.25};
   constexpr double kPeakGain = 0.02;
   // The flank path here is at the input's pose count; a judge's at another
@@ -929,6 +932,13 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
   constexpr double kRoughCapShare = 0.9;
   const double rough_cap = kRoughCapShare * run.settings.stiffer_above_flank_d2;
   ToolPath start;
+  // The rounds start from `start`, which ends here: on return the inputs
+  // point at the caller's start again.
+  struct RestoreGuess {
+    SmoothingInputs& inputs;
+    const ToolPath* const guess;
+    ~RestoreGuess() { inputs.initial_guess = guess; }
+  } restore_guess{held->inputs, held->inputs.initial_guess};
   for (int k = 0; k < run.settings.peak_deviation_rounds; ++k) {
     const SmoothingResult kept = *result;
     const std::vector<TolerancePoint> kept_active = held->active;
@@ -940,10 +950,15 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
     std::vector<bool> worse_before;
     if (!RunsWorseThanInput(run, held->no_worse, kept.output, &worse_before)) return;
     const DeviationReport& out = *kept.output_at_input_feed.deviation;
-    run.Stage("high_accuracy solve lowering the peak deviation (" + std::to_string(k + 1) + ")");
     bool taken = false;
     for (const double fraction : kPeakBoundFractions) {
       const double bound = fraction * worst;
+      const bool milder = fraction != kPeakBoundFractions[0];
+      std::ostringstream stage;
+      stage << "high_accuracy solve lowering the peak deviation (" << k + 1;
+      if (milder) stage << ", the points beyond " << fraction << " of it";
+      stage << ")";
+      run.Stage(stage.str());
       *result = kept;
       held->active = kept_active;
       GrowActiveSet(out, {}, PeakRoundPoints(out, bound), &held->active, bound);
@@ -966,7 +981,10 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
                 RoughnessOver(*result, flank) <= std::max(roughness, rough_cap);
         if (taken) break;
       }
-      if (taken) break;
+      if (taken) {
+        if (milder) ++result->peak_rounds_at_milder_bound;
+        break;
+      }
     }
     if (!taken) {
       *result = kept;
@@ -1413,6 +1431,7 @@ void AddPieceReports(const SmoothingResult& part, bool feeds, bool high_accuracy
   result->stiffer_solves += part.stiffer_solves;
   result->stiffer_solves_eased += part.stiffer_solves_eased;
   result->peak_deviation_rounds += part.peak_deviation_rounds;
+  result->peak_rounds_at_milder_bound += part.peak_rounds_at_milder_bound;
   result->runs_kept.insert(result->runs_kept.end(), part.runs_kept.begin(), part.runs_kept.end());
   result->runs_rougher.insert(result->runs_rougher.end(), part.runs_rougher.begin(),
                               part.runs_rougher.end());

@@ -144,8 +144,8 @@ struct SmoothingSettings {
   // tolerance, makes no run worse on peak d2 than the input's (as
   // keep_runs_no_worse judges) and leaves the peak d2 within
   // stiffer_above_flank_d2 times the flank path's (or no rougher than
-  // before). Each round costs a solve, or two (README, "Random cases",
-  // stops 32, 33 and 44).
+  // before). Each round costs one or two solves held to the tolerance
+  // (README, "Random cases", stops 32, 33 and 44).
   // No round runs with accept_over_tolerance, where there is no promise
   // for a blend to keep.
   int peak_deviation_rounds = 2;
@@ -235,6 +235,9 @@ struct SmoothingResult {
   // High accuracy with a surface: the peak-deviation rounds kept
   // (SmoothingSettings::peak_deviation_rounds).
   int peak_deviation_rounds = 0;
+  // Of those, the rounds kept with the points held at 0.7 of the worst
+  // deviation, where nothing held at half of it was.
+  int peak_rounds_at_milder_bound = 0;
   // High accuracy with a surface: lead-in and lead-out poses whose axes
   // continue the cut's rotary motion (solver/smooth/lead_continuation.h).
   int lead_poses_continued = 0;
