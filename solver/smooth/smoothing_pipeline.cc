@@ -931,14 +931,9 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
   // where this one said 2.0), so a round may not roughen past this share.
   constexpr double kRoughCapShare = 0.9;
   const double rough_cap = kRoughCapShare * run.settings.stiffer_above_flank_d2;
-  ToolPath start;
-  // The rounds start from `start`, which ends here: on return the inputs
-  // point at the caller's start again.
-  struct RestoreGuess {
-    SmoothingInputs& inputs;
-    const ToolPath* const guess;
-    ~RestoreGuess() { inputs.initial_guess = guess; }
-  } restore_guess{held->inputs, held->inputs.initial_guess};
+  // Each solve starts from the round's result; the inputs point at the
+  // caller's start again after it.
+  const ToolPath* const caller_start = held->inputs.initial_guess;
   for (int k = 0; k < run.settings.peak_deviation_rounds; ++k) {
     const SmoothingResult kept = *result;
     const std::vector<TolerancePoint> kept_active = held->active;
@@ -962,13 +957,14 @@ void LowerPeakDeviation(const SmoothingRun& run, const HighAccuracyOptions& opti
       *result = kept;
       held->active = kept_active;
       GrowActiveSet(out, {}, PeakRoundPoints(out, bound), &held->active, bound);
-      start = kept.output;
-      held->inputs.initial_guess = &start;
-      if (!SolveWithinTolerance(run, options, /*may_put_back=*/false, held).ok()) continue;
-      const ToolPath solved = result->output;
+      held->inputs.initial_guess = &kept.output;
+      const bool solved = SolveWithinTolerance(run, options, /*may_put_back=*/false, held).ok();
+      held->inputs.initial_guess = caller_start;
+      if (!solved) continue;
+      const ToolPath solved_path = result->output;
       for (const double t : kPeakBlends) {
         if (t < 1.0) {
-          result->output = Blend(kept.output, solved, t);
+          result->output = Blend(kept.output, solved_path, t);
           if (!run.FinishOutput().ok() ||
               !BeyondTolerance(run.input_allowance_mm, *result->output_at_input_feed.deviation,
                                options.tolerance_mm, kSameMovesSlackMm)
