@@ -214,6 +214,16 @@ void ExpectWithinSevenTenthsOfDpo(const RandomCase& c, const SmoothingResult& re
   EXPECT_LE(PromiseExcessOnPipelineGridMm(c, u_min, u_max, result.output), 0.0);
 }
 
+// Random case `seed` smoothed with the step the report counts in `taken`
+// taken at least once, and within ExpectWithinSevenTenthsOfDpo.
+void ExpectTakenAndWithinSevenTenthsOfDpo(unsigned seed, int SmoothingResult::*taken) {
+  RandomCase c;
+  SmoothingResult result;
+  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(seed, &c, &result));
+  EXPECT_GE(result.*taken, 1);
+  ASSERT_NO_FATAL_FAILURE(ExpectWithinSevenTenthsOfDpo(c, result));
+}
+
 class HighAccuracyRandomCasesTest : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(HighAccuracyRandomCasesTest, HoldsTheIssueTargets) {
@@ -710,15 +720,29 @@ TEST(HighAccuracyRandomCasesTest, TheLastStifferStepIsEasedBackWhereThatIsNearer
 class PeakRoundAtAMilderBoundTest : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(PeakRoundAtAMilderBoundTest, IsTakenWhereTheRoundAtHalfTheWorstIsRefused) {
-  RandomCase c;
-  SmoothingResult result;
-  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(GetParam(), &c, &result));
-  EXPECT_GE(result.peak_rounds_at_milder_bound, 1);
-  ASSERT_NO_FATAL_FAILURE(ExpectWithinSevenTenthsOfDpo(c, result));
+  ExpectTakenAndWithinSevenTenthsOfDpo(GetParam(), &SmoothingResult::peak_rounds_at_milder_bound);
 }
 
 INSTANTIATE_TEST_SUITE_P(RandomCases, PeakRoundAtAMilderBoundTest,
                          ::testing::Values(74u, 136u, 198u));
+
+// A stiffer solve whose tips slide along the path can bend the axes harder
+// as the controller turns them (over the tips' arc length) while its
+// stencils, over the stations', see them smoother; from both starts it
+// came out rougher and was refused. It is then solved once more with each
+// tip held at its station (SolveStiffer, solver/smooth/cost/station_cost.h).
+// Seeds 60, 80 and 160 of the benchmark: with free tips left at peak d2A
+// 2.01, 2.01 and 10.9 x the clean SPO path's (the benchmark's judge); with
+// the tips held, within 2 x (1.69, 1.71 and 1.22 x there) and 0.7 x the
+// clean DPO path's max |dev|, the tolerance promise kept.
+class StifferSolveAtStationsTest : public ::testing::TestWithParam<unsigned> {};
+
+TEST_P(StifferSolveAtStationsTest, HoldsTheTipsWhereTheFreeTipsCameOutRougher) {
+  ExpectTakenAndWithinSevenTenthsOfDpo(GetParam(), &SmoothingResult::stiffer_solves_at_stations);
+}
+
+INSTANTIATE_TEST_SUITE_P(RandomCases, StifferSolveAtStationsTest,
+                         ::testing::Values(60u, 80u, 160u));
 
 INSTANTIATE_TEST_SUITE_P(Passing, HighAccuracyRandomCasesTest,
                          ::testing::Values(2u, 3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u, 11u, 12u, 13u,
