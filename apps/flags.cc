@@ -150,10 +150,10 @@ DEFINE_double(limit_margin, kSettings.high_accuracy.limit_margin,
 DEFINE_double(w_tip_height, kSettings.high_accuracy.w_tip_height,
               "high_accuracy: weight holding each tip where the input had it along its axis "
               "relative to the floor (rail 0).");
-DEFINE_double(w_station, kSettings.high_accuracy.w_station,
-              "high_accuracy with a surface: weight holding each tip at its station along the "
-              "path (0 = free to slide along it; a stiffer solve that comes out rougher is "
-              "tried once at 1).");
+DEFINE_double(w_tip_slide, kSettings.high_accuracy.w_tip_slide,
+              "high_accuracy with a surface: weight holding each tip along the path where the "
+              "solve starts it (0 = free to slide along it; then a stiffer step refused from "
+              "both starts is solved again at 1, and the steps after it too).");
 DEFINE_double(axis_cone_deg, kSettings.high_accuracy.axis_cone_deg,
               "high_accuracy with a surface: each tool axis stays within this angle of the "
               "input's, deg (0, 90].");

@@ -67,7 +67,7 @@ DECLARE_double(w_tip_third);
 DECLARE_double(w_limits);
 DECLARE_double(limit_margin);
 DECLARE_double(w_tip_height);
-DECLARE_double(w_station);
+DECLARE_double(w_tip_slide);
 DECLARE_double(axis_cone_deg);
 DECLARE_double(w_walls);
 DECLARE_int32(ruling_samples);

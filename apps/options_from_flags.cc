@@ -78,7 +78,7 @@ Status SmootherOptionsFromFlags(bool surface_free, SplineSmootherOptions* spline
   ha->w_limits = FLAGS_w_limits;
   ha->limit_margin = FLAGS_limit_margin;
   ha->w_tip_height = FLAGS_w_tip_height;
-  ha->w_station = FLAGS_w_station;
+  ha->w_tip_slide = FLAGS_w_tip_slide;
   ha->axis_cone_deg = FLAGS_axis_cone_deg;
   ha->w_walls = FLAGS_w_walls;
   ha->ruling_samples = FLAGS_ruling_samples;

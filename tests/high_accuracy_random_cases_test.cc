@@ -729,19 +729,20 @@ INSTANTIATE_TEST_SUITE_P(RandomCases, PeakRoundAtAMilderBoundTest,
 // A stiffer solve whose tips slide along the path can bend the axes harder
 // as the controller turns them (over the tips' arc length) while its
 // stencils, over the stations', see them smoother; from both starts it
-// came out rougher and was refused. It is then solved once more with each
-// tip held at its station (SolveStiffer, solver/smooth/cost/station_cost.h).
+// came out rougher and was refused. It is then solved again with each tip
+// held along the path where the solve starts it (SolveStiffer,
+// solver/smooth/cost/tip_slide_cost.h).
 // Seeds 60, 80 and 160 of the benchmark: with free tips left at peak d2A
 // 2.01, 2.01 and 10.9 x the clean SPO path's (the benchmark's judge); with
 // the tips held, within 2 x (1.69, 1.71 and 1.22 x there) and 0.7 x the
 // clean DPO path's max |dev|, the tolerance promise kept.
-class StifferSolveAtStationsTest : public ::testing::TestWithParam<unsigned> {};
+class StifferSolveWithTheTipsHeldTest : public ::testing::TestWithParam<unsigned> {};
 
-TEST_P(StifferSolveAtStationsTest, HoldsTheTipsWhereTheFreeTipsCameOutRougher) {
-  ExpectTakenAndWithinSevenTenthsOfDpo(GetParam(), &SmoothingResult::stiffer_solves_at_stations);
+TEST_P(StifferSolveWithTheTipsHeldTest, HoldsTheTipsWhereTheFreeTipsCameOutRougher) {
+  ExpectTakenAndWithinSevenTenthsOfDpo(GetParam(), &SmoothingResult::stiffer_solves_tips_held);
 }
 
-INSTANTIATE_TEST_SUITE_P(RandomCases, StifferSolveAtStationsTest,
+INSTANTIATE_TEST_SUITE_P(RandomCases, StifferSolveWithTheTipsHeldTest,
                          ::testing::Values(60u, 80u, 160u));
 
 INSTANTIATE_TEST_SUITE_P(Passing, HighAccuracyRandomCasesTest,

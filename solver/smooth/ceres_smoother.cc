@@ -22,8 +22,8 @@
 #include "solver/smooth/cost/axis_limit_cost.h"
 #include "solver/smooth/cost/deviation_cost.h"
 #include "solver/smooth/cost/smoothness_cost.h"
-#include "solver/smooth/cost/station_cost.h"
 #include "solver/smooth/cost/tip_height_cost.h"
+#include "solver/smooth/cost/tip_slide_cost.h"
 #include "solver/smooth/cost/tolerance_band_cost.h"
 #include "solver/smooth/cost/wall_cost.h"
 #include "solver/smooth/ruling_angles.h"
@@ -528,7 +528,7 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
       {"--w_deviation", w_deviation},   {"--w_second", w_second},
       {"--w_third", w_third},           {"--w_tip_second", w_tip_second},
       {"--w_tip_third", w_tip_third},   {"--w_limits", w_limits},
-      {"--w_tip_height", w_tip_height}, {"--w_station", w_station},
+      {"--w_tip_height", w_tip_height}, {"--w_tip_slide", w_tip_slide},
       {"--w_walls", w_walls},           {"--ruling_departure_factor", ruling_departure_factor}};
   for (const auto& [flag, w] : weights) {
     check.Require(finite_at_least(w, 0), InvalidField(flag, w, "finite and >= 0"));
@@ -697,12 +697,12 @@ Status AddTipHeightFamily(const SmoothingInputs& in, const HighAccuracyOptions& 
   return Status::Ok();
 }
 
-// With a surface and w_station > 0, each free pose's tip held at its
-// station along the path (solver/smooth/cost/station_cost.h): where the
-// start has it, the direction from the pose before to the pose after.
-void AddStationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
-                      const std::vector<bool>& free_pose, SmoothingState* state) {
-  if (!(o.w_station > 0) || in.surface == nullptr) return;
+// With a surface and w_tip_slide > 0, each free pose's tip held along the
+// path where the solve starts it (solver/smooth/cost/tip_slide_cost.h),
+// the path's direction there from the pose before to the pose after.
+void AddTipSlideFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
+                       const std::vector<bool>& free_pose, SmoothingState* state) {
+  if (!(o.w_tip_slide > 0) || in.surface == nullptr) return;
   const size_t n = state->poses.size();
   const auto tip = [&](size_t i) { return PoseTip(state->poses[i].data()); };
   for (size_t i = 0; i < n; ++i) {
@@ -712,8 +712,8 @@ void AddStationFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, d
     if (!(along.norm() > kMinStep)) continue;
     const double h = PoseShareMm(*state, i);
     AddPosePart(state, i, "station",
-                StationCost::Create(tip(i), along.normalized(),
-                                    std::sqrt(o.w_station * h / length_mm) / o.tolerance_mm));
+                TipSlideCost::Create(tip(i), along.normalized(),
+                                     std::sqrt(o.w_tip_slide * h / length_mm) / o.tolerance_mm));
   }
 }
 
@@ -801,7 +801,7 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   AddWallFamily(in, o, length_mm, free_pose, state);
   AddTolerancePoints(in, o, free_pose, state, problem);
   RETURN_IF_ERROR(AddTipHeightFamily(in, o, length_mm, free_pose, state));
-  AddStationFamily(in, o, length_mm, free_pose, state);
+  AddTipSlideFamily(in, o, length_mm, free_pose, state);
   AddPoseParts(state, problem);
   AddSmoothnessFamilies(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<1>(in, o, length_mm, free_pose, state, problem);

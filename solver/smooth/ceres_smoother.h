@@ -74,11 +74,11 @@ struct HighAccuracyOptions {
   // Weight of the tip-height gauge (dimensionless), which holds each tip
   // where the input had it along the axis relative to the floor (rail 0).
   double w_tip_height = 1.0;
-  // Weight of holding each tip at its station along the path
-  // (solver/smooth/cost/station_cost.h), dimensionless; 0: the tips slide
-  // freely along it. The pipeline sets it in a stiffer solve that comes out
-  // rougher without it.
-  double w_station = 0.0;
+  // Weight of holding each tip where the solve starts it along the path
+  // (solver/smooth/cost/tip_slide_cost.h), dimensionless; 0: the tips slide
+  // freely along it. Where it is 0, the pipeline's stiffer steps set it
+  // from the first step refused from both starts on (SolveStiffer).
+  double w_tip_slide = 0.0;
   // With a surface, each axis stays within this half angle of the input's
   // axis (solver/smooth/cost/axis_cone_cost.h): wide enough for the smoothing (which
   // turns axes by a degree or two) and for 0.5 deg of CAM noise, narrow

@@ -229,10 +229,10 @@ struct SmoothingResult {
   // weights raised because a run came out worse on peak d2 than the input's
   // (each kept only if held to the tolerance).
   int stiffer_solves = 0;
-  // Of those, the solves with each tip held at its station along the path
-  // (HighAccuracyOptions::w_station), tried where neither start of a
-  // stiffer step came out smoother.
-  int stiffer_solves_at_stations = 0;
+  // Of those, the steps solved with each tip held along the path
+  // (HighAccuracyOptions::w_tip_slide > 0: the caller's weight, or the one
+  // SolveStiffer sets where a step is refused from both starts).
+  int stiffer_solves_tips_held = 0;
   // Whether (1) or not (0) the last stiffer step was eased back towards the
   // result before it, a piece each (LowerPeaksOfStifferOrEased).
   int stiffer_solves_eased = 0;
