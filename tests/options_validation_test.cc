@@ -79,9 +79,7 @@ TEST(OptionsValidationTest, HighAccuracyOptions) {
        "end_guard_distances_mm[0] must be finite and > 0 (got 0)"},
       {[](O* o) { o->guard_distances_mm[3] = o->guard_distances_mm[1]; },
        "guard_distances_mm[3] must be distinct from those before it (got 0.6)"},
-      {[](O* o) {
-         o->end_guard_distances_mm = {0.15, 0.3};
-       },
+      {[](O* o) { o->end_guard_distances_mm = {0.15, 0.3}; },
        "end_guard_distances_mm[1] must be distinct from those before it and from "
        "guard_distances_mm (got 0.3)"},
       {[](O* o) { o->between_min_move_mm = -0.1; },

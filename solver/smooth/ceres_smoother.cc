@@ -711,7 +711,7 @@ void AddTipSlideFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, 
     // Standing still, the pose has no direction to hold it along.
     if (!(along.norm() > kMinStep)) continue;
     const double h = PoseShareMm(*state, i);
-    AddPosePart(state, i, "station",
+    AddPosePart(state, i, "tip_slide",
                 TipSlideCost::Create(tip(i), along.normalized(),
                                      std::sqrt(o.w_tip_slide * h / length_mm) / o.tolerance_mm));
   }

@@ -6,6 +6,7 @@
 // Residual families, each a functor with its formula in its header:
 //   deviation   solver/smooth/cost/deviation_cost.h     swept cutter vs ruled surface
 //   tip height  solver/smooth/cost/tip_height_cost.h    removes the slide along the axis
+//   tip slide   solver/smooth/cost/tip_slide_cost.h     the slide along the path (w_tip_slide > 0)
 //   tolerance   solver/smooth/cost/tolerance_band_cost.h  (surface-free, replaces both)
 //   second      solver/smooth/cost/smoothness_cost.h    d2/ds2 of A, C and the tip
 //   third       solver/smooth/cost/smoothness_cost.h    d3/ds3 of A, C and the tip
