@@ -157,6 +157,7 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
   report["even_stations"] = result.even_stations;
   report["moves_per_move"] = result.moves_per_move;
   report["runs_kept_at_program_moves"] = result.runs_kept_at_program_moves;
+  report["input_joint_bow_mm"] = result.input_joint_bow_mm;
   report["feed_schedule"] = {{"passes", result.feed.passes},
                              {"moves_slowed", result.feed.moves_slowed},
                              {"moves_raised", result.feed.moves_raised},

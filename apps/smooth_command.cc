@@ -127,7 +127,12 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
                   result.tolerance_rounds, result.tolerance_points,
                   settings.high_accuracy.tolerance_mm);
     }
-    if (result.moves_per_move > 1) {
+    if (result.input_joint_bow_mm > 0) {
+      std::printf(
+          "  solved with each cutting move split in %d: under joint interpolation the "
+          "program's moves bow up to %.4g mm off their line\n",
+          result.moves_per_move, result.input_joint_bow_mm);
+    } else if (result.moves_per_move > 1) {
       std::printf(
           "  solved again with each cutting move split in %d: the program's own moves "
           "put %d runs back as programmed\n",

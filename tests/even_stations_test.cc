@@ -7,6 +7,9 @@
 // strip whose ruling turns at a constant rate in its second half only, the
 // steps there are shorter by the square root of twice the error density;
 // split moves add stations between the program's poses at the same steps.
+// The joint bow is zero where the rotaries stand still, the middle of the
+// move's brute-force farthest point off the chord where they turn, four
+// times as large for a move twice as long, and blind to the leads.
 #include "solver/smooth/even_stations.h"
 
 #include <cmath>
@@ -162,6 +165,57 @@ TEST_F(EvenStationsTest, SplitMovesAddEqualStepsBetweenTheProgramsPoses) {
   }
   ToolPath refused;
   EXPECT_FALSE(EvenStations(path, surface_, machine_, Interpolation::kTcp, 0, &refused).ok());
+}
+
+// The farthest the joint-linear tip of the move from pose 0 to pose 1 of
+// `path` strays from the chord, over 1000 points of the move.
+double BruteForceBowMm(const ToolPath& path, const Machine& machine) {
+  std::vector<JointVector> joints;
+  CHECK(machine.AssignJoints(path, &joints).ok());
+  const Eigen::Vector3d& p0 = path.poses[0].p_w_tip;
+  const Eigen::Vector3d& p1 = path.poses[1].p_w_tip;
+  double farthest = 0.0;
+  for (int k = 0; k <= 1000; ++k) {
+    Eigen::Vector3d tip, axis;
+    InterpolateMove<double>(machine.kinematics, Interpolation::kJoint, joints[0], joints[1], p0, p1,
+                            k / 1000.0, &tip, &axis);
+    const Eigen::Vector3d along = (p1 - p0).normalized();
+    const Eigen::Vector3d off = tip - p0;
+    farthest = std::max(farthest, (off - off.dot(along) * along).norm());
+  }
+  return farthest;
+}
+
+TEST_F(EvenStationsTest, TheJointBowIsTheMovesFarthestPointOffItsLine) {
+  // Rotaries still: the joint move is the straight line.
+  ToolPath still;
+  for (double x : {10.0, 60.0}) {
+    still.poses.push_back(PoseAt(x));
+    still.poses.back().a_w = PoseAt(10).a_w;
+  }
+  double bow_mm = -1;
+  ASSERT_TRUE(LargestJointBowMm(still, surface_, machine_, &bow_mm).ok());
+  EXPECT_NEAR(bow_mm, 0.0, 1e-9);
+  // A turning 0.002 rad a millimetre: the bow is the brute-force farthest
+  // point, and a move twice as long (twice the turn) bows four times as far.
+  std::vector<double> bows;
+  for (double length_mm : {20.0, 40.0}) {
+    ToolPath move;
+    for (double x : {30.0, 30.0 + length_mm}) move.poses.push_back(PoseAt(x));
+    ASSERT_TRUE(LargestJointBowMm(move, surface_, machine_, &bow_mm).ok());
+    const double brute_mm = BruteForceBowMm(move, machine_);
+    EXPECT_GT(brute_mm, 5e-4) << length_mm;
+    EXPECT_NEAR(bow_mm, brute_mm, 0.02 * brute_mm) << length_mm;
+    bows.push_back(bow_mm);
+  }
+  EXPECT_NEAR(bows[1] / bows[0], 4.0, 0.2);
+  // A lead-in beyond x = 0 that turns A by 0.5 rad is not a cutting
+  // stretch's move: the bow is the stretch's own.
+  ToolPath led;
+  for (double x : {-6.0, 30.0, 50.0}) led.poses.push_back(PoseAt(x));
+  led.poses[0].a_w = Eigen::Vector3d(0, std::sin(0.5), std::cos(0.5));
+  ASSERT_TRUE(LargestJointBowMm(led, surface_, machine_, &bow_mm).ok());
+  EXPECT_NEAR(bow_mm, bows[0], 1e-9);
 }
 
 }  // namespace

@@ -169,6 +169,9 @@ TEST(OverhangTest, TipBelowTheFloorKeepsItsOverhangAndFitsTheMachine) {
       SCOPED_TRACE(even ? "even stations" : "the program's stations");
       SmoothingSettings settings;
       settings.even_stations = even;
+      // Pose for pose against the program (under joint interpolation its
+      // moves would be split for their bow: split_moves_for_tolerance).
+      settings.split_moves_for_tolerance = 1;
       SmoothingResult result;
       const Status s = RunSmoothing({&cam, &surface, &*cam.cutter, &sim}, settings, &result);
       ASSERT_TRUE(s.ok()) << s.message();

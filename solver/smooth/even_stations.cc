@@ -77,7 +77,34 @@ void SpaceStretch(const ToolPath& path, const std::vector<JointVector>& joints,
   out->poses.push_back(path.poses[last]);
 }
 
+// Whether the move into pose i of `path` continues the cutting stretch
+// that pose i - 1 is in (`beyond`: PosesBeyondRailEnds's).
+bool ContinuesStretch(const ToolPath& path, const std::vector<bool>& beyond, size_t i) {
+  const ToolPose& pose = path.poses[i];
+  return !IsPositioningMove(pose) && !beyond[i] && !beyond[i - 1] &&
+         pose.tool == path.poses[i - 1].tool;
+}
+
 }  // namespace
+
+Status LargestJointBowMm(const ToolPath& path, const RuledSurface& surface, const Machine& machine,
+                         double* bow_mm) {
+  std::vector<JointVector> joints;
+  RETURN_IF_ERROR(machine.AssignJoints(path, &joints));
+  const std::vector<bool> beyond =
+      PosesBeyondRailEnds(surface.rail(0), path, ProjectPathOntoRail(surface.rail(0), path));
+  *bow_mm = 0.0;
+  for (size_t i = 1; i < path.poses.size(); ++i) {
+    if (!ContinuesStretch(path, beyond, i)) continue;
+    const Eigen::Vector3d& p0 = path.poses[i - 1].p_w_tip;
+    const Eigen::Vector3d& p1 = path.poses[i].p_w_tip;
+    Eigen::Vector3d tip, axis;
+    InterpolateMove<double>(machine.kinematics, Interpolation::kJoint, joints[i - 1], joints[i], p0,
+                            p1, 0.5, &tip, &axis);
+    *bow_mm = std::max(*bow_mm, (tip - 0.5 * (p0 + p1)).norm());
+  }
+  return Status::Ok();
+}
 
 Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Machine& machine,
                     Interpolation interpolation, int moves_per_move, ToolPath* out) {
@@ -92,12 +119,7 @@ Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Mac
   const size_t n = path.poses.size();
   std::vector<double> density(n, 0.0);
   for (size_t i = 0; i < n; ++i) density[i] = MoveErrorDensity(surface, u[i]);
-  // The move into pose i continues the stretch that pose i - 1 is in.
-  const auto continues = [&](size_t i) {
-    const ToolPose& pose = path.poses[i];
-    return !IsPositioningMove(pose) && !beyond[i] && !beyond[i - 1] &&
-           pose.tool == path.poses[i - 1].tool;
-  };
+  const auto continues = [&](size_t i) { return ContinuesStretch(path, beyond, i); };
   ToolPath stations = WithoutPoses(path);
   for (size_t first = 0; first < n;) {
     size_t last = first;

@@ -44,6 +44,14 @@ namespace tpopt {
 Status EvenStations(const ToolPath& path, const RuledSurface& surface, const Machine& machine,
                     Interpolation interpolation, int moves_per_move, ToolPath* out);
 
+// The farthest the tip strays from the straight line between a cutting
+// move's two poses at the middle of the move when the controller moves the
+// joints linearly (model/machine/interpolation.h), over the cutting moves of
+// `path` that EvenStations spaces, mm: what joint interpolation adds to a
+// move's error (0 under TCP). Fails where `path`'s joints cannot be assigned.
+Status LargestJointBowMm(const ToolPath& path, const RuledSurface& surface, const Machine& machine,
+                         double* bow_mm);
+
 }  // namespace tpopt
 
 #endif  // TPOPT_SOLVER_EVEN_STATIONS_H_

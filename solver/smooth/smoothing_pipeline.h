@@ -202,8 +202,13 @@ struct SmoothingResult {
   // into this many (SmoothingSettings::split_moves_for_tolerance); 1: not.
   int moves_per_move = 1;
   // With moves_per_move > 1: the runs the solve at the program's own move
-  // count put back as programmed (more than runs_kept_as_input).
+  // count put back as programmed (more than runs_kept_as_input), where the
+  // split was for those runs.
   int runs_kept_at_program_moves = 0;
+  // With moves_per_move > 1 under joint interpolation, where the moves were
+  // split before any solve: the farthest the input's joint-linear moves bow
+  // off their line at their middle, mm (even_stations.h, LargestJointBowMm).
+  double input_joint_bow_mm = 0.0;
   PathMetrics output_at_input_feed;   // before feed scheduling
   PathMetrics output_metrics;         // as written
   // High accuracy: the tolerance unit of the solve, mm.
