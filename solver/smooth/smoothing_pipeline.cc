@@ -1337,7 +1337,7 @@ Status KeepProgramAfterSolverFailure(const SmoothingJob& job, const SmoothingSet
 // Under joint interpolation the controller moves the joints linearly, and
 // the tip of a programmed move bows off the line between its poses by about
 // the pivot distance times the rotary turn squared over 8 (on the random
-// cases a median 0.15 mm, at most 1.4 mm, at 40 poses); no placement of the
+// cases a median 0.14 mm, at most 14 mm, at 40 poses); no placement of the
 // program's own poses takes that out, and a solve held to the tolerance there
 // bends the axes pose to pose trying (README, "Random cases", stop 47). So
 // the moves are split first, into the fewest (a power of two that
