@@ -1394,7 +1394,7 @@ Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& set
     *result = SmoothingResult();
     s = SmoothAtStations(job, own, 1, result, guess_out);
   }
-  if (result->moves_per_move > 1) result->input_joint_bow_mm = bow_mm;
+  const bool split_for_bow = result->moves_per_move > 1;
   const int kept_at_program_moves = result->runs_kept_as_input;
   // The finer splits first, then (after a split for the bow) the coarser:
   // on a move of several millimetres of bow the finest is not always the
@@ -1411,12 +1411,14 @@ Status SmoothWithOneCutter(const SmoothingJob& job, const SmoothingSettings& set
     ToolPath finer_guess;
     if (SmoothAtStations(job, settings, split, &finer, &finer_guess).ok() &&
         finer.runs_kept_as_input < result->runs_kept_as_input) {
-      finer.runs_kept_at_program_moves =
-          result->moves_per_move == 1 ? kept_at_program_moves : result->runs_kept_at_program_moves;
-      finer.input_joint_bow_mm = result->input_joint_bow_mm;
       *result = std::move(finer);
       if (guess_out != nullptr) *guess_out = std::move(finer_guess);
     }
+  }
+  if (split_for_bow) {
+    result->input_joint_bow_mm = bow_mm;
+  } else if (result->moves_per_move > 1) {
+    result->runs_kept_at_program_moves = kept_at_program_moves;
   }
   if (s.code() != StatusCode::kSolver || settings.mode != SmoothingMode::kHighAccuracy ||
       !settings.keep_runs_no_worse) {
