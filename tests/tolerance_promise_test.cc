@@ -98,5 +98,41 @@ TEST(TolerancePromiseTest, WithoutPosesNothingIsAllowed) {
   for (double a : allowance) EXPECT_EQ(a, 0.0);
 }
 
+// A tolerance round that held the points beyond harder and moved none of
+// them by more than a nanometre has stalled; one that moved any of them,
+// or left others beyond, has not.
+TEST(TolerancePromiseTest, SameBeyondPointsOnlyWhereNoneMoved) {
+  DeviationReport before = Grid(5, 2, 0.001);
+  before.deviation_mm[3] = 0.013;
+  before.deviation_mm[6] = -0.0121;
+  const std::vector<double> allowance(before.deviation_mm.size(), 0.0);
+  const std::vector<size_t> beyond_before = BeyondTolerance(allowance, before, 0.01);
+  ASSERT_EQ(beyond_before, (std::vector<size_t>{3, 6}));
+
+  DeviationReport after = before;
+  after.deviation_mm[0] = 0.002;  // a point within the tolerance moved
+  after.deviation_mm[6] -= 0.5e-6;
+  EXPECT_TRUE(SameBeyondPoints(before, beyond_before, after,
+                               BeyondTolerance(allowance, after, 0.01), 1e-6));
+
+  after.deviation_mm[6] -= 1e-6;  // now 1.5 nm farther
+  EXPECT_FALSE(SameBeyondPoints(before, beyond_before, after,
+                                BeyondTolerance(allowance, after, 0.01), 1e-6));
+
+  after = before;
+  after.deviation_mm[6] = 0.009;  // brought within
+  EXPECT_FALSE(SameBeyondPoints(before, beyond_before, after,
+                                BeyondTolerance(allowance, after, 0.01), 1e-6));
+
+  after = before;
+  after.deviation_mm[8] = 0.02;  // another pushed out
+  EXPECT_FALSE(SameBeyondPoints(before, beyond_before, after,
+                                BeyondTolerance(allowance, after, 0.01), 1e-6));
+
+  // Nothing beyond before (the first round) or after (held).
+  EXPECT_FALSE(SameBeyondPoints(before, {}, before, beyond_before, 1e-6));
+  EXPECT_FALSE(SameBeyondPoints(before, beyond_before, Grid(5, 2, 0.001), {}, 1e-6));
+}
+
 }  // namespace
 }  // namespace tpopt

@@ -21,6 +21,16 @@ std::vector<size_t> BeyondTolerance(const std::vector<double>& allowance_mm,
   return beyond;
 }
 
+bool SameBeyondPoints(const DeviationReport& before, const std::vector<size_t>& beyond_before,
+                      const DeviationReport& after, const std::vector<size_t>& beyond_after,
+                      double within_mm) {
+  if (beyond_after.empty() || beyond_after != beyond_before) return false;
+  for (const size_t k : beyond_after) {
+    if (!(std::abs(after.deviation_mm[k] - before.deviation_mm[k]) <= within_mm)) return false;
+  }
+  return true;
+}
+
 std::vector<double> InputAllowance(const DeviationReport& in, std::vector<double> input_u) {
   std::sort(input_u.begin(), input_u.end());
   const size_t nu = in.u.size(), nv = in.v.size();

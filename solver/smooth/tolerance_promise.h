@@ -33,6 +33,15 @@ std::vector<size_t> BeyondTolerance(const std::vector<double>& allowance_mm,
                                     const DeviationReport& out, double tolerance_mm,
                                     double slack_mm = 0.0);
 
+// Whether the points that break the promise after a solve (`beyond_after`
+// of `after`, as BeyondTolerance gives them) are those of the solve before
+// (`beyond_before` of `before`), each as far off to within `within_mm`: a
+// solve that held them harder moved none of them. False where either is
+// empty.
+bool SameBeyondPoints(const DeviationReport& before, const std::vector<size_t>& beyond_before,
+                      const DeviationReport& after, const std::vector<size_t>& beyond_after,
+                      double within_mm);
+
 // Why a result is refused: how many points are beyond, and the worst, with
 // the input's own deviation there. `beyond` is not empty.
 std::string BeyondToleranceMessage(const DeviationReport& in, const DeviationReport& out,
