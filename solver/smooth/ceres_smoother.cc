@@ -330,10 +330,10 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
   // those two moves are guarded at as many points inside as the judge
   // samples a move (DeviationOptions::substeps, 8). With the lead move
   // unguarded, a floor corner stayed cut 0.0113 mm deep at every penalty
-  // (random case 173). Under TCP, where the tip keeps to
-  // its line, guards inside the lead moves lost three of the 200 random
-  // cases (36, 60, 160) and gained one, and with the first cut move's too
-  // 36 and 60 stayed lost (README, "Random cases", stop 49).
+  // (random case 173). Under TCP, where the tip keeps to its line, guards
+  // inside the lead moves lost three of the 200 random cases (36, 60, 160)
+  // and gained one, and with the first cut move's too 36 and 60 stayed
+  // lost (README, "Random cases", stop 49).
   constexpr int kEndOfCutMoveGuards = 7;
   if (in.surface == nullptr || in.tolerance_points == nullptr) return;
   // Only a point's excess over kToleranceTargetFraction of its bound (the
@@ -378,12 +378,10 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
         nearest = i;
       }
     }
-    if (!bracketed) {
-      if (nearest < n) {
-        state->families["tolerance_points"].push_back(problem->AddResidualBlock(
-            DeviationCost::CreateAtPose(contact, settings, scale), nullptr,
-            state->poses[nearest].data()));
-      }
+    if (!bracketed && nearest < n) {
+      state->families["tolerance_points"].push_back(
+          problem->AddResidualBlock(DeviationCost::CreateAtPose(contact, settings, scale), nullptr,
+                                    state->poses[nearest].data()));
     }
     const double speed_mm = std::max(in.surface->rail(0).Evaluate(point.u, 1)[1].norm(), 1e-9);
     const double reach_u = guard_reach_mm / speed_mm;
