@@ -139,6 +139,10 @@ DEFINE_double(ruling_departure_factor, kSettings.high_accuracy.ruling_departure_
               "d2 and d3 are of A's and C's departure from them, at this many times "
               "w_second and w_third (0: of the angles themselves; "
               "solver/smooth/ruling_angles.h).");
+DEFINE_double(end_of_cut_guard_weight, kSettings.high_accuracy.end_of_cut_guard_weight,
+              "high_accuracy with a surface, joint interpolation: weight of the overcut guards "
+              "inside the two moves either side of a cut's end pose, relative to the held "
+              "point's own.");
 DEFINE_double(w_tip_second, kSettings.high_accuracy.w_tip_second,
               "high_accuracy: weight of the tip's d2p/ds2, mm^2.");
 DEFINE_double(w_tip_third, kSettings.high_accuracy.w_tip_third,

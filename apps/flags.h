@@ -62,6 +62,7 @@ DECLARE_double(w_deviation);
 DECLARE_double(w_second);
 DECLARE_double(w_third);
 DECLARE_double(ruling_departure_factor);
+DECLARE_double(end_of_cut_guard_weight);
 DECLARE_double(w_tip_second);
 DECLARE_double(w_tip_third);
 DECLARE_double(w_limits);

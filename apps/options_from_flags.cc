@@ -73,6 +73,7 @@ Status SmootherOptionsFromFlags(bool surface_free, SplineSmootherOptions* spline
   ha->w_second = FLAGS_w_second;
   ha->w_third = FLAGS_w_third;
   ha->ruling_departure_factor = FLAGS_ruling_departure_factor;
+  ha->end_of_cut_guard_weight = FLAGS_end_of_cut_guard_weight;
   ha->w_tip_second = FLAGS_w_tip_second;
   ha->w_tip_third = FLAGS_w_tip_third;
   ha->w_limits = FLAGS_w_limits;

@@ -460,9 +460,10 @@ TEST(HighAccuracyRandomCasesPutBackTest, APointGougedFromANeighbouringPoseIsHeld
 // pose out of the travel (Z -175 mm against [-120, 120]) and was refused;
 // it is solved again at the program's own stations, which the input fits,
 // so the case succeeds inside the travel. (With the angles themselves
-// differentiated and one deviation check inside each move: differentiating
-// their departure from the rulings, or with two checks, the solve at even
-// stations keeps inside the travel.)
+// differentiated, one deviation check inside each move and the end-of-cut
+// guards at the held point's full weight: differentiating their departure
+// from the rulings, with two checks, or with the guards at their default
+// weight, the solve at even stations keeps inside the travel.)
 TEST(HighAccuracyRandomCasesTest, ASolveRefusedAtEvenStationsIsSolvedAtTheProgramsOwn) {
   RandomCase c;
   ASSERT_TRUE(MakeCase(120, &c));
@@ -471,6 +472,7 @@ TEST(HighAccuracyRandomCasesTest, ASolveRefusedAtEvenStationsIsSolvedAtTheProgra
   settings.mode = SmoothingMode::kHighAccuracy;
   settings.high_accuracy.ruling_departure_factor = 0;
   settings.high_accuracy.between_samples = 1;
+  settings.high_accuracy.end_of_cut_guard_weight = 1;
   settings.deviation.interpolation = Interpolation::kJoint;
   settings.judge_on_input_range = true;
   SmoothingResult result;
@@ -854,6 +856,16 @@ INSTANTIATE_TEST_SUITE_P(SplitForTheJointBow, HighAccuracyRandomCasesJointTest,
 // floor corner point that its lead-in cut 0.0113 mm deep at any penalty.
 INSTANTIATE_TEST_SUITE_P(EndOfCutMoveGuards, HighAccuracyRandomCasesJointTest,
                          ::testing::Values(157u, 173u));
+
+// Joint interpolation: seeds that hold the targets only since stop 50's
+// end-of-cut guards at a hundredth of the held point's weight
+// (HighAccuracyOptions::end_of_cut_guard_weight). At its full weight,
+// measured by the benchmark: 33 at 1.82 x the clean DPO path's max |dev|,
+// 64 at d2A 2.40 x and d2C 4.12 x the clean SPO path's, 98 at d2C 2.87 x
+// (the first solve came out rougher, and the stiffer steps did not bring
+// it back). Seeds 29 and 200 gained too, at a minute or two each.
+INSTANTIATE_TEST_SUITE_P(EndOfCutGuardWeight, HighAccuracyRandomCasesJointTest,
+                         ::testing::Values(33u, 64u, 98u));
 
 // Seeds that hold the targets only since stop 41's guards (measured by the
 // benchmark before: 52 at 1.62 x the clean DPO path's max |dev|, 3 um into

@@ -70,6 +70,8 @@ TEST(OptionsValidationTest, HighAccuracyOptions) {
       {[](O* o) { o->w_walls = -6; }, "--w_walls must be finite and >= 0 (got -6)"},
       {[](O* o) { o->ruling_departure_factor = -1; },
        "--ruling_departure_factor must be finite and >= 0 (got -1)"},
+      {[](O* o) { o->end_of_cut_guard_weight = -0.5; },
+       "--end_of_cut_guard_weight must be finite and >= 0 (got -0.5)"},
       {[](O* o) { o->axis_cone_deg = 91; }, "--axis_cone_deg must be in (0, 90] (got 91)"},
       {[](O* o) { o->travel_margin_mm = 0; }, "travel_margin_mm must be finite and > 0 (got 0)"},
       {[](O* o) { o->limit_margin = 1.5; }, "--limit_margin must be in (0, 1] (got 1.5)"},

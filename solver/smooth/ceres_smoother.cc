@@ -328,7 +328,8 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
   // move's cutter, its tip bowed off the line from beyond the surface, and
   // by the first cut move's, neither at the fraction the point's u gives:
   // those two moves are guarded at as many points inside as the judge
-  // samples a move (DeviationOptions::substeps, 8). With the lead move
+  // samples a move (DeviationOptions::substeps, 8), at
+  // HighAccuracyOptions::end_of_cut_guard_weight. With the lead move
   // unguarded, a floor corner stayed cut 0.0113 mm deep at every penalty
   // (random case 173). Under TCP, where the tip keeps to its line, guards
   // inside the lead moves lost three of the 200 random cases (36, 60, 160)
@@ -353,6 +354,7 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
                                            kToleranceTargetFraction * bound_mm};
     const Eigen::Vector3d q_w = in.surface->Point(point.u, point.v);
     const double scale = std::sqrt(o.w_deviation * point.weight);
+    const double end_scale = std::sqrt(o.end_of_cut_guard_weight) * scale;
     DeviationCost::Points contact, guard;
     contact.contact_w.push_back(q_w);
     guard.guard_w.push_back(q_w);
@@ -416,7 +418,8 @@ void AddTolerancePoints(const SmoothingInputs& in, const HighAccuracyOptions& o,
       if (end_move) per_move = std::max(per_move, kEndOfCutMoveGuards);
       for (int k = 1; k <= per_move; ++k) {
         state->families["tolerance_points"].push_back(problem->AddResidualBlock(
-            DeviationCost::CreateBetweenPoses(guard, settings, scale, k / (per_move + 1.0)),
+            DeviationCost::CreateBetweenPoses(guard, settings, end_move ? end_scale : scale,
+                                              k / (per_move + 1.0)),
             nullptr, state->poses[i].data(), state->poses[i + 1].data()));
       }
     }
@@ -544,11 +547,17 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
   check.Require(finite_at_least(overcut_factor, 1),
           InvalidField("--overcut_factor", overcut_factor, "finite and >= 1"));
   const std::pair<const char*, double> weights[] = {
-      {"--w_deviation", w_deviation},   {"--w_second", w_second},
-      {"--w_third", w_third},           {"--w_tip_second", w_tip_second},
-      {"--w_tip_third", w_tip_third},   {"--w_limits", w_limits},
-      {"--w_tip_height", w_tip_height}, {"--w_tip_slide", w_tip_slide},
-      {"--w_walls", w_walls},           {"--ruling_departure_factor", ruling_departure_factor}};
+      {"--w_deviation", w_deviation},
+      {"--w_second", w_second},
+      {"--w_third", w_third},
+      {"--w_tip_second", w_tip_second},
+      {"--w_tip_third", w_tip_third},
+      {"--w_limits", w_limits},
+      {"--w_tip_height", w_tip_height},
+      {"--w_tip_slide", w_tip_slide},
+      {"--w_walls", w_walls},
+      {"--ruling_departure_factor", ruling_departure_factor},
+      {"--end_of_cut_guard_weight", end_of_cut_guard_weight}};
   for (const auto& [flag, w] : weights) {
     check.Require(finite_at_least(w, 0), InvalidField(flag, w, "finite and >= 0"));
   }
