@@ -861,9 +861,8 @@ INSTANTIATE_TEST_SUITE_P(EndOfCutMoveGuards, HighAccuracyRandomCasesJointTest,
 // end-of-cut guards at a hundredth of the held point's weight
 // (HighAccuracyOptions::end_of_cut_guard_weight). At its full weight,
 // measured by the benchmark: 33 at 1.82 x the clean DPO path's max |dev|,
-// 64 at d2A 2.40 x and d2C 4.12 x the clean SPO path's, 98 at d2C 2.87 x
-// (the first solve came out rougher, and the stiffer steps did not bring
-// it back). Seeds 29 and 200 gained too, at a minute or two each.
+// 64 at d2A 2.40 x and d2C 4.12 x the clean SPO path's, 98 at d2C 2.87 x.
+// Seeds 29 and 200 gained too, at a minute or two each.
 INSTANTIATE_TEST_SUITE_P(EndOfCutGuardWeight, HighAccuracyRandomCasesJointTest,
                          ::testing::Values(33u, 64u, 98u));
 

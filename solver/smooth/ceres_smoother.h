@@ -121,11 +121,10 @@ struct HighAccuracyOptions {
   // Under joint interpolation, the weight of the guards inside the two moves
   // either side of a cut's end pose, relative to the held point's own
   // (solver/smooth/ceres_smoother.cc, AddTolerancePoints). At the point's
-  // full weight they held the end of the cut so hard that the first solve
-  // came out rougher (random cases 29, 33, 64 and 98); at a hundredth the
-  // floor corner they are there for stays held (173 under joint
-  // interpolation, all three targets: 169 -> 173 of 200; README, "Random
-  // cases", stop 50). >= 0.
+  // full weight the first solve of random cases 29 and 64 came out rougher
+  // and the stiffer steps did not bring it back; at a hundredth the floor
+  // corner they are there for stays held (case 173), and more cases meet
+  // the issue's targets (README, "Random cases", stops 49 and 50). >= 0.
   double end_of_cut_guard_weight = 0.01;
   // Points inside each move (at the controller's interpolation) checked
   // for deviation (0 = poses only). On 200 random cases (README, "Random
