@@ -95,6 +95,20 @@ double Quantile(std::vector<double> values, double p) {
 // clean SPO path's.
 constexpr double kD2Target = 2.0;
 
+// The cases (seeds; a case's rows are consecutive) with a row that meets
+// `pred`.
+template <typename Pred>
+size_t CasesWhere(const std::vector<Row>& rows, Pred pred) {
+  size_t cases = 0;
+  const Row* last_counted = nullptr;
+  for (const Row& row : rows) {
+    if (!pred(row) || (last_counted != nullptr && last_counted->seed == row.seed)) continue;
+    ++cases;
+    last_counted = &row;
+  }
+  return cases;
+}
+
 double Ratio(double value, double reference) {
   return reference > 0 ? value / reference : (value > 0 ? INFINITY : 1.0);
 }
@@ -313,33 +327,25 @@ int Main(int argc, char** argv) {
               *std::max_element(seeds.begin(), seeds.end()), poses, not_fitting, total_s);
   // The accurate reference's own peaks: where the clean DPO path is itself
   // beyond the d2 target, the deviation and d2 targets pull apart.
-  std::vector<unsigned> dpo_rough;
-  for (const Row& row : rows) {
-    if ((row.dpo_a_ratio > kD2Target || row.dpo_c_ratio > kD2Target) &&
-        (dpo_rough.empty() || dpo_rough.back() != row.seed)) {
-      dpo_rough.push_back(row.seed);
-    }
-  }
-  std::printf("The clean DPO path itself is beyond %.0f x the SPO path's peak d2A or d2C on %zu "
-              "of the cases run.\n\n",
-              kD2Target, dpo_rough.size());
+  std::printf(
+      "The clean DPO path itself is beyond %.0f x the SPO path's peak d2A or d2C on %zu "
+      "of the cases run.\n\n",
+      kD2Target, CasesWhere(rows, [](const Row& row) {
+        return row.dpo_a_ratio > kD2Target || row.dpo_c_ratio > kD2Target;
+      }));
   // And where it breaks the tolerance promise against the CAM input, the
   // deviation target and the promise do (per interpolation model).
   for (const Interpolation model : {Interpolation::kTcp, Interpolation::kJoint}) {
-    std::vector<unsigned> breaking;
-    bool ran = false;
-    for (const Row& row : rows) {
-      if (row.interpolation != InterpolationName(model)) continue;
-      ran = true;
-      if (row.dpo_promise_breaks > 0 && (breaking.empty() || breaking.back() != row.seed)) {
-        breaking.push_back(row.seed);
-      }
-    }
-    if (!ran) continue;
+    const auto under_model = [&](const Row& row) {
+      return row.interpolation == InterpolationName(model);
+    };
+    if (CasesWhere(rows, under_model) == 0) continue;
     std::printf(
         "Under %s interpolation the clean DPO path itself breaks the tolerance promise "
         "(beyond %.3g mm where the CAM input was within it) on %zu of the cases run.\n\n",
-        InterpolationName(model), base.high_accuracy.tolerance_mm, breaking.size());
+        InterpolationName(model), base.high_accuracy.tolerance_mm,
+        CasesWhere(rows,
+                   [&](const Row& row) { return under_model(row) && row.dpo_promise_breaks > 0; }));
   }
   std::printf("| mode | interpolation | run | refused | failed | max\\|dev\\|/DPO median / p95 / "
               "worst | <= 0.7 | <= 1.0 | d2A/SPO median / p95 / worst | d2C/SPO median / p95 / "
