@@ -216,6 +216,14 @@ DEFINE_int32(stiffer_solves, kSettings.stiffer_solves,
              "smooth: high_accuracy with a surface solves again with stiffer smoothing (each "
              "time ten times the last's weights) at most this many times in turn, 0-8 (0 = "
              "none).");
+DEFINE_double(peak_d2_cap_over_flank, kSettings.peak_d2_cap_over_flank,
+              "smooth: high_accuracy with a surface: where the stiffer solves are spent or "
+              "refused on a path still above --stiffer_above_flank_d2, one solve more keeps the "
+              "weights and caps peak d2A/ds2 and d2C/ds2 at this many times the flank (SPO) "
+              "path's instead (0 = no such solve).");
+DEFINE_double(w_peak_second, kSettings.high_accuracy.w_peak_second,
+              "high_accuracy: weight of the cap that --peak_d2_cap_over_flank sets "
+              "(dimensionless, one-sided, >= 0).");
 DEFINE_int32(peak_deviation_rounds, kSettings.peak_deviation_rounds,
              "smooth: high_accuracy with a surface solves again up to this many times to lower "
              "the result's worst deviation, holding the grid points farther than half of it (on "

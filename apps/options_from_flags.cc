@@ -80,6 +80,7 @@ Status SmootherOptionsFromFlags(bool surface_free, SplineSmootherOptions* spline
   ha->limit_margin = FLAGS_limit_margin;
   ha->w_tip_height = FLAGS_w_tip_height;
   ha->w_tip_slide = FLAGS_w_tip_slide;
+  ha->w_peak_second = FLAGS_w_peak_second;
   ha->axis_cone_deg = FLAGS_axis_cone_deg;
   ha->w_walls = FLAGS_w_walls;
   ha->ruling_samples = FLAGS_ruling_samples;

@@ -150,6 +150,7 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
   }
   report["stiffer_solves"] = result.stiffer_solves;
   report["stiffer_solves_tips_held"] = result.stiffer_solves_tips_held;
+  report["stiffer_solves_capped"] = result.stiffer_solves_capped;
   report["stiffer_solves_eased"] = result.stiffer_solves_eased;
   report["peak_deviation_rounds"] = result.peak_deviation_rounds;
   report["peak_rounds_at_milder_bound"] = result.peak_rounds_at_milder_bound;

@@ -213,6 +213,7 @@ Status RequestFromFlags(SmoothRequest* request) {
   settings.keep_runs_no_worse = FLAGS_keep_runs_no_worse;
   settings.stiffer_above_flank_d2 = FLAGS_stiffer_above_flank_d2;
   settings.stiffer_solves = FLAGS_stiffer_solves;
+  settings.peak_d2_cap_over_flank = FLAGS_peak_d2_cap_over_flank;
   settings.peak_deviation_rounds = FLAGS_peak_deviation_rounds;
   settings.judge_on_input_range = FLAGS_judge_on_input_range;
   settings.even_stations = FLAGS_even_stations;
@@ -232,6 +233,10 @@ Status RequestFromFlags(SmoothRequest* request) {
   if (!(FLAGS_stiffer_above_flank_d2 >= 0) || !std::isfinite(FLAGS_stiffer_above_flank_d2)) {
     return Status::Usage(InvalidField("--stiffer_above_flank_d2", FLAGS_stiffer_above_flank_d2,
                                       "finite and >= 0"));
+  }
+  if (!(FLAGS_peak_d2_cap_over_flank >= 0) || !std::isfinite(FLAGS_peak_d2_cap_over_flank)) {
+    return Status::Usage(
+        InvalidField("--peak_d2_cap_over_flank", FLAGS_peak_d2_cap_over_flank, "finite and >= 0"));
   }
   if (FLAGS_stiffer_solves < 0 || FLAGS_stiffer_solves > SmoothingSettings::kMaxStifferSolves) {
     return Status::Usage(

@@ -154,7 +154,8 @@ Row RunCase(const RandomCase& c, const Config& config, const Reference& dpo_refe
   // input's (with the input's deviation), and solves repeated stiffer.
   row.message = "runs kept as input " + std::to_string(result.runs_kept_as_input) +
                 ", stiffer solves " + std::to_string(result.stiffer_solves) + " (tips held " +
-                std::to_string(result.stiffer_solves_tips_held) + "), last eased " +
+                std::to_string(result.stiffer_solves_tips_held) + ", capped " +
+                std::to_string(result.stiffer_solves_capped) + "), last eased " +
                 std::to_string(result.stiffer_solves_eased) + ", peak-deviation rounds " +
                 std::to_string(result.peak_deviation_rounds) + " (at 0.7 " +
                 std::to_string(result.peak_rounds_at_milder_bound) + ")";

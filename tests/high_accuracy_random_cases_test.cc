@@ -312,8 +312,9 @@ TEST(HighAccuracyRandomCasesTest, UnderJointInterpolationSplitMovesHoldTheTolera
 
 // Under joint interpolation seed 116's programmed moves bow off their line
 // by far more than half the tolerance: solved at the program's own move
-// count the output stays beyond the clean DPO path's max |dev| (the DPO
-// path's moves bow too), and split for the bow (into four, the most
+// count the output stays beyond half the clean DPO path's max |dev| (the
+// DPO path's moves bow too; beyond all of it before stop 52's capped step,
+// 0.84 x since), and split for the bow (into four, the most
 // SmoothingSettings::split_moves_for_tolerance allows by default) it comes
 // within a fifth of it, by the brute-force judge.
 TEST(HighAccuracyRandomCasesTest, UnderJointInterpolationTheMovesAreSplitForTheirBow) {
@@ -327,7 +328,8 @@ TEST(HighAccuracyRandomCasesTest, UnderJointInterpolationTheMovesAreSplitForThei
   ASSERT_TRUE(testing::SmoothRandomCase(c, settings, &unsplit).ok());
   EXPECT_EQ(unsplit.moves_per_move, 1);
   EXPECT_EQ(unsplit.input_joint_bow_mm, 0.0);
-  EXPECT_GT(WorstMm(Brute(c, unsplit.output, u_min, u_max, false, Interpolation::kJoint)), dpo_mm);
+  EXPECT_GT(WorstMm(Brute(c, unsplit.output, u_min, u_max, false, Interpolation::kJoint)),
+            0.5 * dpo_mm);
 
   settings.split_moves_for_tolerance = SmoothingSettings().split_moves_for_tolerance;
   SmoothingResult split;
@@ -699,6 +701,31 @@ TEST(HighAccuracyRandomCasesPutBackTest, AxesRougherThanTheSurfacesOwnFlankPathA
   EXPECT_LE(WorstMm(Brute(c, result.output, u_min, u_max)), 0.7 * dpo_mm);
 }
 
+// The ten-fold stiffer steps spent on a path still rougher than the flank
+// path's peaks allow, one step more at the weights as they were caps the
+// axes' peak d2 instead (SmoothingSettings::peak_d2_cap_over_flank,
+// solver/smooth/cost/peak_second_cost.h). Seed 42 of the benchmark: after
+// four ten-fold steps its peak d2A/ds2 stays at 8.6 x the clean SPO path's;
+// capped, within 2 x and 0.7 x the clean DPO path's max |dev|, the tolerance
+// promise kept.
+TEST(HighAccuracyRandomCasesTest, AStepWithThePeaksCappedFollowsTheTenFoldSteps) {
+  RandomCase c;
+  double u_min = 0, u_max = 0;
+  ASSERT_NO_FATAL_FAILURE(MakeCaseOnItsRange(42, &c, &u_min, &u_max));
+  const std::array<double, 2> spo = PeakSecond(c.machine, c.clean_spo);
+  SmoothingSettings settings = AsTheIssueJudges();
+  settings.peak_d2_cap_over_flank = 0;
+  SmoothingResult ten_fold;
+  ASSERT_TRUE(testing::SmoothRandomCase(c, settings, &ten_fold).ok());
+  EXPECT_EQ(ten_fold.stiffer_solves_capped, 0);
+  EXPECT_EQ(ten_fold.stiffer_solves, settings.stiffer_solves);
+  EXPECT_GT(PeakSecond(c.machine, ten_fold.output)[0], 4 * spo[0]);
+  SmoothingResult result;
+  ASSERT_NO_FATAL_FAILURE(MakeAndSmooth(42, &c, &result));
+  EXPECT_EQ(result.stiffer_solves_capped, 1);
+  ASSERT_NO_FATAL_FAILURE(ExpectWithinSevenTenthsOfDpo(c, result));
+}
+
 // Seeds whose cases hold the targets (11 and 15 since stop 24; 2, 4, 5, 10,
 // 13 and 14 since the solve's even stations, stop 26; 8 again since its
 // lead-out continues the cut's motion, stop 28; 9 since axes rougher than
@@ -875,27 +902,21 @@ INSTANTIATE_TEST_SUITE_P(EndOfCutGuardWeight, HighAccuracyRandomCasesJointTest,
 INSTANTIATE_TEST_SUITE_P(LeadMovesAndNearerEndGuards, HighAccuracyRandomCasesTest,
                          ::testing::Values(52u, 115u, 125u));
 
-// Seeds that still fail (stop 35: at even stations, the departure from the
-// rulings differentiated, the leads' axes continuing the cut's, two
-// deviation checks inside each move, rough axes solved stiffer from both
-// starts with the tip's d2 at 10 mm^2 or more, guard rulings at 0.15 mm at
-// the rulings' ends, peak-deviation rounds); run them with
-// --gtest_also_run_disabled_tests. What fails, measured, as a multiple of
-// the clean SPO path's peak d2 (the target: 2): seed 1, d2A 5.4 (6.3 at
-// stop 35, 6.5 at stop 34, 24 at stop 30), its end near the pole, where the
-// rulings give no reference; the clean DPO path's own is 7.1 x there, and
-// the seed holds in RoughReference below. Seed 22 (d2C 3.4 at stop 34)
-// holds since stop 35's stiffer tip weight and is in Passing.
-INSTANTIATE_TEST_SUITE_P(DISABLED_FailingUntilTheSolverFixes, HighAccuracyRandomCasesTest,
-                         ::testing::Values(1u));
+// Seeds that hold the targets only since the step with the peaks capped
+// after the ten-fold steps (stop 52; measured by the benchmark before it:
+// seed 1 d2A 2.10 x the clean SPO path's, 5.4 at stop 37, near the pole
+// where the rulings give no reference and the clean DPO path's own is 7.1 x;
+// 42 d2A 8.6 x; 190 d2A 2.17 x).
+INSTANTIATE_TEST_SUITE_P(PeaksCappedAfterTheTenFoldSteps, HighAccuracyRandomCasesTest,
+                         ::testing::Values(1u, 42u, 190u));
 
 // Seeds whose clean DPO path is itself beyond 2 x the SPO path's peak d2A
 // or d2C, held to max |dev| <= 1.0 x the DPO path's and each peak d2 within
 // the larger of 2 x SPO and the DPO path's own (stop 37, README "Random
 // cases"; measured by the benchmark: seed 1 d2A 5.4 x SPO, DPO 7.1 x; 55
 // d2A 3.4 x, DPO 5.8 x; 64 d2C 2.1 x, DPO 3.8 x; 105 d2C 3.3 x, DPO 8.5 x;
-// 183 d2A 2.8 x, DPO 3.2 x; 192 d2C 2.6 x, DPO 26 x). Seed 1 stays above
-// for the strict target.
+// 183 d2A 2.8 x, DPO 3.2 x; 192 d2C 2.6 x, DPO 26 x). Seed 1 holds the strict
+// target too since stop 52 (PeaksCappedAfterTheTenFoldSteps).
 INSTANTIATE_TEST_SUITE_P(RoughReference, HighAccuracyRandomCasesRoughReferenceTest,
                          ::testing::Values(1u, 55u, 64u, 105u, 183u, 192u));
 

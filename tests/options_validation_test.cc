@@ -68,6 +68,9 @@ TEST(OptionsValidationTest, HighAccuracyOptions) {
       {[](O* o) { o->w_tip_height = -5; }, "--w_tip_height must be finite and >= 0 (got -5)"},
       {[](O* o) { o->w_tip_slide = NAN; }, "--w_tip_slide must be finite and >= 0 (got nan)"},
       {[](O* o) { o->w_walls = -6; }, "--w_walls must be finite and >= 0 (got -6)"},
+      {[](O* o) { o->w_peak_second = -7; }, "--w_peak_second must be finite and >= 0 (got -7)"},
+      {[](O* o) { o->peak_second_cap_per_mm2[1] = NAN; },
+       "peak_second_cap_per_mm2[1] must be finite and >= 0 (got nan)"},
       {[](O* o) { o->ruling_departure_factor = -1; },
        "--ruling_departure_factor must be finite and >= 0 (got -1)"},
       {[](O* o) { o->end_of_cut_guard_weight = -0.5; },
@@ -81,7 +84,9 @@ TEST(OptionsValidationTest, HighAccuracyOptions) {
        "end_guard_distances_mm[0] must be finite and > 0 (got 0)"},
       {[](O* o) { o->guard_distances_mm[3] = o->guard_distances_mm[1]; },
        "guard_distances_mm[3] must be distinct from those before it (got 0.6)"},
-      {[](O* o) { o->end_guard_distances_mm = {0.15, 0.3}; },
+      {[](O* o) {
+         o->end_guard_distances_mm = {0.15, 0.3};
+       },
        "end_guard_distances_mm[1] must be distinct from those before it and from "
        "guard_distances_mm (got 0.3)"},
       {[](O* o) { o->between_min_move_mm = -0.1; },

@@ -339,6 +339,10 @@ TEST(TpoptCliTest, SmoothUsageAndInputErrorsWriteNothing) {
                      "--tolerance_mm must be finite and > 0 (got -1)");
   expect_usage_error("--mode=spline --stiffer_above_flank_d2=-1",
                      "--stiffer_above_flank_d2 must be finite and >= 0 (got -1)");
+  expect_usage_error("--mode=spline --peak_d2_cap_over_flank=-0.5",
+                     "--peak_d2_cap_over_flank must be finite and >= 0 (got -0.5)");
+  expect_usage_error("--mode=spline --w_peak_second=-1",
+                     "--w_peak_second must be finite and >= 0 (got -1)");
   expect_usage_error("--mode=spline --stiffer_solves=9",
                      "--stiffer_solves must be between 0 and 8 (got 9)");
   expect_usage_error("--mode=spline --stiffer_solves=-1",

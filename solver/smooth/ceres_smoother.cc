@@ -21,6 +21,7 @@
 #include "solver/smooth/coarse_to_fine.h"
 #include "solver/smooth/cost/axis_limit_cost.h"
 #include "solver/smooth/cost/deviation_cost.h"
+#include "solver/smooth/cost/peak_second_cost.h"
 #include "solver/smooth/cost/smoothness_cost.h"
 #include "solver/smooth/cost/tip_height_cost.h"
 #include "solver/smooth/cost/tip_slide_cost.h"
@@ -556,6 +557,9 @@ bool HighAccuracyOptions::IsValid(std::string* why) const {
       {"--w_tip_height", w_tip_height},
       {"--w_tip_slide", w_tip_slide},
       {"--w_walls", w_walls},
+      {"--w_peak_second", w_peak_second},
+      {"peak_second_cap_per_mm2[0]", peak_second_cap_per_mm2[0]},
+      {"peak_second_cap_per_mm2[1]", peak_second_cap_per_mm2[1]},
       {"--ruling_departure_factor", ruling_departure_factor},
       {"--end_of_cut_guard_weight", end_of_cut_guard_weight}};
   for (const auto& [flag, w] : weights) {
@@ -808,6 +812,20 @@ void AddSmoothnessFamilies(const SmoothingInputs& in, const HighAccuracyOptions&
   }
 }
 
+// The cap on the peaks of d2A/ds2 and d2C/ds2 (peak_second_cost.h), where
+// one is set.
+void AddPeakSecondFamily(const SmoothingInputs& in, const HighAccuracyOptions& o, double length_mm,
+                         const std::vector<bool>& free_pose, SmoothingState* state,
+                         ceres::Problem* problem) {
+  const std::array<double, 2>& cap = o.peak_second_cap_per_mm2;
+  if (o.w_peak_second <= 0 || (cap[0] <= 0 && cap[1] <= 0)) return;
+  AddStencils<2>(*in.input, free_pose, BreaksSmoothness, state, problem, "peak_second",
+                 [&](size_t i) {
+                   const double h = (state->s_mm[i + 2] - state->s_mm[i]) / 2;
+                   return PeakSecondCost::Create(cap, std::sqrt(o.w_peak_second * h / length_mm));
+                 });
+}
+
 }  // namespace
 
 Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
@@ -832,6 +850,7 @@ Status BuildProblem(const SmoothingInputs& in, const HighAccuracyOptions& o,
   AddTipSlideFamily(in, o, length_mm, free_pose, state);
   AddPoseParts(state, problem);
   AddSmoothnessFamilies(in, o, length_mm, free_pose, state, problem);
+  AddPeakSecondFamily(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<1>(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<2>(in, o, length_mm, free_pose, state, problem);
   AddLimitFamily<3>(in, o, length_mm, free_pose, state, problem);

@@ -65,6 +65,12 @@ struct HighAccuracyOptions {
   // a run held to the tolerance by it can miss it (random seed 120 then
   // goes back as programmed); the pipeline's stiffer solves set it.
   bool ruling_a_near_pole = false;
+  // A cap on each rotary axis's |d2/ds2| over the tip's travel, rad/mm^2
+  // (solver/smooth/cost/peak_second_cost.h; 0: none for that axis), and
+  // its weight (dimensionless): zero below the cap, so it bends the peaks
+  // alone. The pipeline sets the caps from the surface's own flank path.
+  std::array<double, 2> peak_second_cap_per_mm2 = {0.0, 0.0};
+  double w_peak_second = 1e3;
   // Weights of the second/third derivative of the tip, mm^2 and mm^4.
   double w_tip_second = 1e-2;
   double w_tip_third = 0.0;

@@ -809,7 +809,9 @@ bool EaseLastStiffer(const SmoothingRun& run, const HeldSolve& held, double tole
 // alone and does not come nearer them or leaves the surface more than
 // twice as far off, is not taken; with neither taken the last result
 // stays (and `*options` the weights it was solved with), and the put-back
-// then has the final word. `flank`: FlankPathPeaks. `*before_last_step`
+// then has the final word. Where the steps are spent or refused on a path
+// still above the flank path's peaks, one step more caps the peaks instead
+// (settings.peak_d2_cap_over_flank). `flank`: FlankPathPeaks. `*before_last_step`
 // receives the result before the last step taken, if any.
 void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
                   HighAccuracyOptions* options, HeldSolve* held,
@@ -836,10 +838,14 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
   // With the factor at 0 the flank path's peaks ask for no stiffer solve.
   const std::array<double, 2> rough_flank =
       rough_factor > 0 ? flank : std::array<double, 2>{INFINITY, INFINITY};
-  for (int k = 0; k < std::min(settings.stiffer_solves, SmoothingSettings::kMaxStifferSolves) &&
-                  settings.keep_runs_no_worse && job.surface != nullptr &&
-                  settings.resample_step_mm <= 0 && held->beyond_runs.empty();
-       ++k) {
+  if (!settings.keep_runs_no_worse || job.surface == nullptr || settings.resample_step_mm > 0 ||
+      !held->beyond_runs.empty()) {
+    return;
+  }
+  const int ten_fold_steps =
+      std::min(settings.stiffer_solves, SmoothingSettings::kMaxStifferSolves);
+  bool capped_tried = false;
+  for (int k = 0;; ++k) {
     std::vector<bool> worse_runs;
     if (!RunsWorseThanInput(run, held->no_worse, result->output, &worse_runs)) break;
     const bool worse = std::any_of(worse_runs.begin(), worse_runs.end(), [](bool b) { return b; });
@@ -881,15 +887,20 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
       held->active = kept_active;
       return false;
     };
-    if (solve_from(kept.output)) {
-      const SmoothingResult from_result = *result;
-      const std::vector<TolerancePoint> from_result_active = held->active;
-      if (!(solve_from(*first_start) &&
-            RoughnessOver(*result, rough_flank) < RoughnessOver(from_result, rough_flank))) {
-        *result = from_result;
-        held->active = from_result_active;
+    // The ten-fold step from its own result and from the first start; where
+    // both are refused, with the tips held.
+    const auto ten_fold = [&]() {
+      if (solve_from(kept.output)) {
+        const SmoothingResult from_result = *result;
+        const std::vector<TolerancePoint> from_result_active = held->active;
+        if (!(solve_from(*first_start) &&
+              RoughnessOver(*result, rough_flank) < RoughnessOver(from_result, rough_flank))) {
+          *result = from_result;
+          held->active = from_result_active;
+        }
+        return true;
       }
-    } else if (!solve_from(*first_start)) {
+      if (solve_from(*first_start)) return true;
       // Refused from both starts, on a path still rougher than asked: the
       // tips may have slid along the path where the stencils do not see it
       // (solver/smooth/cost/tip_slide_cost.h). The step is solved again with
@@ -897,13 +908,34 @@ void SolveStiffer(const SmoothingRun& run, const std::array<double, 2>& flank,
       // where that is refused, from the first start; the steps after it and
       // the peak rounds keep the tips held (options). Not where the tips
       // are held already (by the caller's weight, or an earlier step).
-      if (stiffer.w_tip_slide > 0 || !(roughness > rough_factor)) break;
+      if (stiffer.w_tip_slide > 0 || !(roughness > rough_factor)) return false;
       stiffer.w_tip_slide = kTipSlideWeight;
-      if (!solve_from(kept.output) && !solve_from(*first_start)) break;
+      return solve_from(kept.output) || solve_from(*first_start);
+    };
+    if (k < ten_fold_steps && ten_fold()) {
+      *options = stiffer;
+      ++result->stiffer_solves;
+      if (stiffer.w_tip_slide > 0) ++result->stiffer_solves_tips_held;
+      *before_last_step = kept;
+      continue;
     }
+    // The ten-fold steps spent or refused on a path still rougher than the
+    // flank path's peaks allow: one step more at the weights as they were,
+    // with the peaks capped instead (settings.peak_d2_cap_over_flank). As
+    // the first step it cost cases the ten-fold steps hold (README,
+    // "Random cases", stop 52).
+    const double cap = settings.peak_d2_cap_over_flank;
+    if (capped_tried || !(cap > 0) || !(roughness > rough_factor)) break;
+    capped_tried = true;
+    stiffer = *options;
+    for (int q = 0; q < 2; ++q) {
+      stiffer.peak_second_cap_per_mm2[q] = std::isfinite(flank[q]) ? cap * flank[q] : 0.0;
+    }
+    run.Stage("high_accuracy solve with the axes' peak d2 capped");
+    if (!solve_from(kept.output)) break;
     *options = stiffer;
     ++result->stiffer_solves;
-    if (stiffer.w_tip_slide > 0) ++result->stiffer_solves_tips_held;
+    ++result->stiffer_solves_capped;
     *before_last_step = kept;
   }
   held->inputs.initial_guess = first_start;
@@ -1500,6 +1532,7 @@ void AddPieceReports(const SmoothingResult& part, bool feeds, bool high_accuracy
   result->peak_deviation_rounds += part.peak_deviation_rounds;
   result->peak_rounds_at_milder_bound += part.peak_rounds_at_milder_bound;
   result->stiffer_solves_tips_held += part.stiffer_solves_tips_held;
+  result->stiffer_solves_capped += part.stiffer_solves_capped;
   result->runs_kept.insert(result->runs_kept.end(), part.runs_kept.begin(), part.runs_kept.end());
   result->runs_rougher.insert(result->runs_rougher.end(), part.runs_rougher.begin(),
                               part.runs_rougher.end());

@@ -133,6 +133,13 @@ struct SmoothingSettings {
   // cases that asked for them (README, "Random cases", stop 39).
   int stiffer_solves = 4;
   static constexpr int kMaxStifferSolves = 8;
+  // Where those steps are spent or refused on a path still above
+  // stiffer_above_flank_d2, one step more keeps the smoothness weights and
+  // caps instead the peak d2A/ds2 and d2C/ds2 at this many times the flank
+  // path's (HighAccuracyOptions::peak_second_cap_per_mm2); the peak rounds
+  // after it keep the cap. Below stiffer_above_flank_d2, for the same
+  // reason that is below the target's 2. 0 = no such step.
+  double peak_d2_cap_over_flank = 1.5;
   // High accuracy with a surface: rounds that lower the result's peak
   // deviation after the solve (0 = none). Least squares spreads the
   // deviation, and its peak stays where the smoothness and the surface
@@ -238,6 +245,9 @@ struct SmoothingResult {
   // (HighAccuracyOptions::w_tip_slide > 0: the caller's weight, or the one
   // SolveStiffer sets where a step is refused from both starts).
   int stiffer_solves_tips_held = 0;
+  // Of those, the steps that capped the axes' peak d2 at the weights as
+  // they were (SmoothingSettings::peak_d2_cap_over_flank).
+  int stiffer_solves_capped = 0;
   // Whether (1) or not (0) the last stiffer step was eased back towards the
   // result before it, a piece each (LowerPeaksOfStifferOrEased).
   int stiffer_solves_eased = 0;
