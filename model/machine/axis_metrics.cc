@@ -106,9 +106,8 @@ double SecondDerivativePerMm2(const ToolPath& path, const std::vector<JointVecto
   if (path.poses[i].link || path.poses[i + 1].link) return 0.0;
   const double ds_mid = 0.5 * (m.ds_mm[i] + m.ds_mm[i - 1]);
   if (!(ds_mid > 1e-9 && m.ds_mm[i] > 1e-9 && m.ds_mm[i - 1] > 1e-9)) return 0.0;
-  const double slope1 = (joints[i + 1][a] - joints[i][a]) / m.ds_mm[i];
-  const double slope0 = (joints[i][a] - joints[i - 1][a]) / m.ds_mm[i - 1];
-  return std::abs(slope1 - slope0) / ds_mid;
+  return SecondDifferenceOverTravel(joints[i - 1][a], joints[i][a], joints[i + 1][a],
+                                    m.ds_mm[i - 1], m.ds_mm[i]);
 }
 
 MotionReport EvaluateMotion(const Machine& machine, const ToolPath& path,

@@ -17,6 +17,7 @@
 #define TPOPT_MODEL_AXIS_METRICS_H_
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,16 @@ struct MotionSamples {
 MotionSamples ComputeMotionSamples(const Machine& machine, const ToolPath& path,
                                    const std::vector<JointVector>& joints,
                                    double default_feed_mm_per_min);
+
+// |d2q/ds2| at the middle of three poses from the joint's values q0, q1,
+// q2 and the tips' travel ds0, ds1 (both > 0) between them: the change of
+// slope over the mean step. A template so that the solver's cap on it
+// (solver/smooth/cost/peak_second_cost.h) measures what the report does.
+template <typename T>
+T SecondDifferenceOverTravel(const T& q0, const T& q1, const T& q2, const T& ds0, const T& ds1) {
+  using std::abs;
+  return abs((q2 - q1) / ds1 - (q1 - q0) / ds0) / (T(0.5) * (ds0 + ds1));
+}
 
 // |d2 joint a / ds2| at pose i, units (mm or rad) per mm^2, s the tip's arc
 // length: the divided difference whose peak the metrics report; 0 where it

@@ -1,6 +1,6 @@
 // One-sided cap on the second derivative of A and C over the tip's travel,
-// measured as the judge measures it (model/machine/axis_metrics.cc,
-// SecondDerivativePerMm2) from three consecutive poses:
+// measured by the judge's own SecondDifferenceOverTravel
+// (model/machine/axis_metrics.h) from three consecutive poses:
 //   D = |(q_2 - q_1) / ds_1 - (q_1 - q_0) / ds_0| / ((ds_0 + ds_1) / 2)
 // with ds_j = |tip_{j+1} - tip_j| of the poses being solved, and
 //   r_q = sqrt(w h / L) * max(0, D - cap_q) / cap_q
@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 
+#include "model/machine/axis_metrics.h"
 #include "solver/smooth/cost/pose_parameters.h"
 #include "solver/smooth/cost/pose_stencil.h"
 
@@ -39,7 +40,6 @@ class PeakSecondCost : public PoseStencil<PeakSecondCost> {
   // Residuals from the three poses (PoseStencil calls this).
   template <typename T>
   bool Evaluate(const T* const* poses, T* r) const {
-    using std::abs;
     const T ds0 = (PoseTip(poses[1]) - PoseTip(poses[0])).norm();
     const T ds1 = (PoseTip(poses[2]) - PoseTip(poses[1])).norm();
     for (int q = 0; q < 2; ++q) {
@@ -47,9 +47,8 @@ class PeakSecondCost : public PoseStencil<PeakSecondCost> {
       // A stencil whose tips stand (a repeated pose) has no slope to bend.
       if (cap_[q] <= 0 || !(ds0 > T(kMinStepMm) && ds1 > T(kMinStepMm))) continue;
       const int d = q == 0 ? kPoseA : kPoseC;
-      const T slope1 = (poses[2][d] - poses[1][d]) / ds1;
-      const T slope0 = (poses[1][d] - poses[0][d]) / ds0;
-      const T excess = abs(slope1 - slope0) / (T(0.5) * (ds0 + ds1)) - T(cap_[q]);
+      const T excess =
+          SecondDifferenceOverTravel(poses[0][d], poses[1][d], poses[2][d], ds0, ds1) - T(cap_[q]);
       if (excess > T(0.0)) r[q] = T(scale_ / cap_[q]) * excess;
     }
     return true;
