@@ -148,6 +148,15 @@ nlohmann::json SmoothReportJson(const Invocation& invocation, const std::string&
          {"smoothed_peak_d2_deg_per_mm2", k.smoothed_peak * kRadToDeg},
          {"input_worst_mm", k.input_worst_mm}});
   }
+  const FlankRoughness& flank = result.flank_roughness;
+  report["peak_d2_over_flank_path"] =
+      flank.measured
+          ? nlohmann::json{{"axis", flank.axis},
+                           {"ratio", flank.Ratio()},
+                           {"smoothed_peak_d2_deg_per_mm2", flank.smoothed_peak * kRadToDeg},
+                           {"flank_path_peak_d2_deg_per_mm2", flank.flank_peak * kRadToDeg},
+                           {"line", flank.line}}
+          : nlohmann::json(nullptr);
   report["stiffer_solves"] = result.stiffer_solves;
   report["stiffer_solves_tips_held"] = result.stiffer_solves_tips_held;
   report["stiffer_solves_capped"] = result.stiffer_solves_capped;

@@ -138,6 +138,15 @@ void PrintSummary(const SmoothingSettings& settings, const SmoothingResult& resu
           "put %d runs back as programmed\n",
           result.moves_per_move, result.runs_kept_at_program_moves);
     }
+    const FlankRoughness& flank = result.flank_roughness;
+    if (flank.measured && settings.stiffer_above_flank_d2 > 0 &&
+        flank.Ratio() > settings.stiffer_above_flank_d2) {
+      std::printf(
+          "  rougher than the surface's own flank path: peak d2%s/ds2 %.4g deg/mm^2 at line %d, "
+          "%.3g x the flank path's %.4g (above --stiffer_above_flank_d2 %.3g)\n",
+          flank.axis.c_str(), flank.smoothed_peak * kRadToDeg, flank.line, flank.Ratio(),
+          flank.flank_peak * kRadToDeg, settings.stiffer_above_flank_d2);
+    }
     if (ha.pole_passages > 0) {
       std::printf("  pole passages: %d solved both ways round A = 0 (%d in a window round them), "
                   "%d kept the other way\n",

@@ -8,6 +8,7 @@
 //       [--poses=40] [--out=random_cases.csv] [--seeds=3,17,29]
 //       [--mode=spline|high_accuracy] [--interpolation=tcp|joint]
 //       [--even_stations=false] [--accept_over_tolerance]
+//       [--peak_d2_cap_over_flank=1.5]
 //
 // --seeds runs the listed seeds instead of --cases from --first_seed;
 // --mode and --interpolation run only the configurations that match (for
@@ -15,7 +16,9 @@
 // the CAM's own stations (solver/smooth/even_stations.h);
 // --accept_over_tolerance lifts the tolerance promise
 // (solver/smooth/tolerance_promise.h), as the tool's flag does, to measure
-// what the promise costs against the targets. With --seeds every
+// what the promise costs against the targets; --peak_d2_cap_over_flank sets
+// the capped stiffer step's cap as the tool's flag does (0: no capped step).
+// With --seeds every
 // refusal also prints the case's description and the input's and initial
 // guess's max |dev|.
 //
@@ -211,11 +214,14 @@ int Main(int argc, char** argv) {
       base.even_stations = false;
     } else if (std::strcmp(arg, "--accept_over_tolerance") == 0) {
       base.accept_over_tolerance = true;
+    } else if (std::strncmp(arg, "--peak_d2_cap_over_flank=", 25) == 0) {
+      base.peak_d2_cap_over_flank = std::strtod(arg + 25, nullptr);
     } else {
       std::fprintf(stderr,
                    "usage: %s [--cases=200] [--first_seed=1] [--poses=40] [--out=FILE.csv] "
                    "[--seeds=a,b,c] [--mode=spline|high_accuracy] [--interpolation=tcp|joint] "
-                   "[--even_stations=false] [--accept_over_tolerance]\n",
+                   "[--even_stations=false] [--accept_over_tolerance] "
+                   "[--peak_d2_cap_over_flank=1.5]\n",
                    argv[0]);
       return 2;
     }

@@ -8,19 +8,20 @@
 //    RoughReference, whose clean DPO path is itself beyond that, within the
 //    larger of it and the DPO path's own);
 //  - every axis within its cone round the input's axis.
+#include <gtest/gtest.h>
+
 #include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "apps/report.h"
 #include "model/eval/deviation.h"
+#include "model/eval/random_cases.h"
 #include "model/io/json_io.h"
 #include "model/machine/axis_metrics.h"
 #include "model/machine/interpolation.h"
-#include "model/eval/random_cases.h"
+#include "model/path/path_generator.h"
 #include "model/path/rail_projection.h"
 #include "solver/smooth/smoothing_pipeline.h"
 #include "solver/smooth/tolerance_promise.h"
@@ -699,6 +700,57 @@ TEST(HighAccuracyRandomCasesPutBackTest, AxesRougherThanTheSurfacesOwnFlankPathA
   EXPECT_LE(out[0], 2 * spo[0]);
   EXPECT_LE(out[1], 2 * spo[1]);
   EXPECT_LE(WorstMm(Brute(c, result.output, u_min, u_max)), 0.7 * dpo_mm);
+}
+
+// The report says how rough the written path is against the surface's own
+// flank path, and where. Seed 91 solved with no stiffer step ends with peak
+// d2A/ds2 beyond 2 x the clean SPO path's; the ratio, its axis and its line
+// are checked against a flank path generated here and a scan of the output.
+TEST(HighAccuracyRandomCasesTest, TheReportGivesThePeakD2OverTheSurfacesOwnFlankPath) {
+  RandomCase c;
+  double u_min = 0, u_max = 0;
+  ASSERT_NO_FATAL_FAILURE(MakeCaseOnItsRange(91, &c, &u_min, &u_max));
+  constexpr int kFirstLine = 100;
+  for (size_t i = 0; i < c.cam_path.poses.size(); ++i) {
+    c.cam_path.poses[i].source_line = kFirstLine + static_cast<int>(i);
+  }
+  SmoothingSettings settings = AsTheIssueJudges();
+  settings.stiffer_above_flank_d2 = 0;
+  SmoothingResult result;
+  ASSERT_TRUE(testing::SmoothRandomCase(c, settings, &result).ok());
+  const FlankRoughness& r = result.flank_roughness;
+  ASSERT_TRUE(r.measured);
+  FlankPathOptions flank_options;
+  flank_options.cutter_radius_mm = c.cutter.radius_mm;
+  flank_options.taper_rad = c.cutter.taper_rad;
+  flank_options.poses = static_cast<int>(c.cam_path.poses.size());
+  ToolPath flank;
+  ASSERT_TRUE(GenerateFlankPath(c.surface, flank_options, &flank).ok());
+  const std::array<double, 2> flank_peak = PeakSecond(c.machine, flank);
+  const std::array<double, 2> out_peak = PeakSecond(c.machine, result.output);
+  const std::array<double, 2> ratio = {out_peak[0] / flank_peak[0], out_peak[1] / flank_peak[1]};
+  const int axis = ratio[0] >= ratio[1] ? 0 : 1;
+  EXPECT_EQ(r.axis, axis == 0 ? "A" : "C");
+  EXPECT_NEAR(r.Ratio(), ratio[axis], 1e-9 * ratio[axis]);
+  EXPECT_GT(r.Ratio(), 2.0);
+  std::vector<JointVector> joints;
+  ASSERT_TRUE(c.machine.AssignJoints(result.output, &joints).ok());
+  const MotionSamples m =
+      ComputeMotionSamples(c.machine, result.output, joints, settings.feed.default_feed_mm_per_min);
+  std::vector<int> lines_at_peak;
+  for (size_t i = 0; i < result.output.poses.size(); ++i) {
+    if (SecondDerivativePerMm2(result.output, joints, m, i, axis == 0 ? kA : kC) ==
+        out_peak[axis]) {
+      lines_at_peak.push_back(result.output.poses[i].source_line);
+    }
+  }
+  ASSERT_EQ(lines_at_peak.size(), 1u);
+  EXPECT_EQ(r.line, lines_at_peak[0]);
+  EXPECT_GE(r.line, kFirstLine);
+  const nlohmann::json report = SmoothReportJson({"test"}, "high_accuracy", result);
+  EXPECT_EQ(report["peak_d2_over_flank_path"]["line"], r.line);
+  EXPECT_NEAR(report["peak_d2_over_flank_path"]["flank_path_peak_d2_deg_per_mm2"].get<double>(),
+              flank_peak[axis] * 180 / M_PI, 1e-9 * flank_peak[axis] * 180 / M_PI);
 }
 
 // The ten-fold stiffer steps spent on a path still rougher than the flank

@@ -221,6 +221,43 @@ TEST(TpoptCliTest, SmoothWritesPathAndSideBySideReport) {
   }
 }
 
+// A smoothed path rougher than the surface's own flank path allows is named
+// on the console with its line, as the report gives it; one within it is
+// not. The bound of 0.2 x the flank path's peak no solve reaches.
+TEST(TpoptCliTest, SmoothNamesAPathRougherThanTheSurfacesOwnFlankPath) {
+  TempDir dir;
+  const std::string cam = dir.File("cam.cls"), report = dir.File("report.json");
+  ASSERT_EQ(RunCommand(Tpopt("generate --surface=" + kBlade +
+                             " --cutter_radius=4 --poses=120 --uv_distortion=0.03 "
+                             "--axis_noise_deg=0.3 --out=" +
+                             cam))
+                .exit_code,
+            0);
+  const std::string smooth =
+      "smooth --flagfile=" + SourcePath("data/presets/impeller_high_accuracy.flags") +
+      " --in=" + cam + " --out=" + dir.File("out.cls") + " --surface=" + kBlade +
+      " --machine=" + kSim + " --report=" + report;
+  const auto within = RunCommand(Tpopt(smooth));
+  ASSERT_EQ(within.exit_code, 0) << within.output;
+  const nlohmann::json w = ReadJson(report)["peak_d2_over_flank_path"];
+  ASSERT_TRUE(w.is_object()) << w;
+  EXPECT_LE(w["ratio"].get<double>(), 1.8);
+  EXPECT_EQ(within.output.find("rougher than the surface's own flank path"), std::string::npos);
+  const auto rough = RunCommand(Tpopt(smooth + " --stiffer_above_flank_d2=0.2"));
+  ASSERT_EQ(rough.exit_code, 0) << rough.output;
+  const nlohmann::json r = ReadJson(report)["peak_d2_over_flank_path"];
+  ASSERT_TRUE(r.is_object()) << r;
+  EXPECT_GT(r["ratio"].get<double>(), 0.2);
+  EXPECT_GT(r["line"].get<int>(), 0);
+  const std::string named =
+      "rougher than the surface's own flank path: peak d2" + r["axis"].get<std::string>() + "/ds2";
+  const size_t at = rough.output.find(named);
+  ASSERT_NE(at, std::string::npos) << rough.output;
+  EXPECT_NE(rough.output.find("at line " + std::to_string(r["line"].get<int>()) + ",", at),
+            std::string::npos)
+      << rough.output;
+}
+
 TEST(TpoptCliTest, RaisedFeedsShortenTheMachiningTimeWithinTheLimits) {
   TempDir dir;
   const std::string hypar = SourcePath("data/surfaces/hypar.json");

@@ -688,6 +688,28 @@ std::array<double, 2> FlankPathPeaks(const SmoothingJob& job) {
   return PeakRotarySecond(EvaluateMotion(*job.machine, path, joints, MotionOptions()));
 }
 
+// `path` against the flank path's peaks `flank` (FlankPathPeaks), scanned
+// pose by pose as the motion report takes its peaks; an axis whose flank
+// path does not turn it is left out.
+FlankRoughness MeasureFlankRoughness(const Machine& machine, const ToolPath& path,
+                                     const std::array<double, 2>& flank,
+                                     double default_feed_mm_per_min) {
+  FlankRoughness roughness;
+  std::vector<JointVector> joints;
+  if (!machine.AssignJoints(path, &joints).ok()) return roughness;
+  const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
+  for (int q = 0; q < 2; ++q) {
+    if (!(flank[q] > 0) || !std::isfinite(flank[q])) continue;
+    for (size_t i = 0; i < path.poses.size(); ++i) {
+      const double d2 = SecondDerivativePerMm2(path, joints, m, i, q == 0 ? kA : kC);
+      if (!roughness.measured || d2 / flank[q] > roughness.Ratio()) {
+        roughness = {true, q == 0 ? "A" : "C", d2, flank[q], path.poses[i].source_line};
+      }
+    }
+  }
+  return roughness;
+}
+
 // How many times the flank path's peaks `flank` the output's peak d2A or
 // d2C is (as FinishOutput evaluated it), the greater; 0 where the flank
 // path's is 0.
@@ -1281,6 +1303,8 @@ Status SolveHighAccuracy(const SmoothingRun& run, const ToolPath& stations,
         << out_metrics.motion.worst_violation_pose;
     return Status::SolverFailure(why.str());
   }
+  result->flank_roughness = MeasureFlankRoughness(*job.machine, result->output, flank,
+                                                  settings.feed.default_feed_mm_per_min);
   return Status::Ok();
 }
 
@@ -1540,6 +1564,11 @@ void AddPieceReports(const SmoothingResult& part, bool feeds, bool high_accuracy
   result->tolerance_points += part.tolerance_points;
   result->solve_tolerance_mm = std::max(result->solve_tolerance_mm, part.solve_tolerance_mm);
   result->start_placed_on_surface |= part.start_placed_on_surface;
+  const FlankRoughness& r = part.flank_roughness;
+  if (r.measured &&
+      (!result->flank_roughness.measured || r.Ratio() > result->flank_roughness.Ratio())) {
+    result->flank_roughness = r;
+  }
   result->even_stations |= part.even_stations;
   SplineSmootherReport& sp = result->spline;
   sp.zones += part.spline.zones;

@@ -82,6 +82,20 @@ struct RougherRun {
   double input_worst_mm = 0.0;
 };
 
+// High accuracy with a surface: the written path's peak d2A/ds2 or d2C/ds2
+// against the surface's own flank path's (the SPO path at the input's pose
+// count, the reference the stiffer solves smooth towards), on the axis where
+// the ratio is the larger.
+struct FlankRoughness {
+  bool measured = false;       // false: no surface, or no flank path
+  std::string axis;            // "A" or "C"
+  double smoothed_peak = 0.0;  // rad per mm^2 (the report gives deg)
+  double flank_peak = 0.0;     // rad per mm^2; > 0 where measured
+  // Source line (ToolPose::source_line) of the pose at the smoothed peak.
+  int line = 0;
+  double Ratio() const { return smoothed_peak / flank_peak; }
+};
+
 struct SmoothingJob {
   const ToolPath* input = nullptr;
   const RuledSurface* surface = nullptr;  // null: surface-free smoothing
@@ -237,6 +251,9 @@ struct SmoothingResult {
   // High accuracy: the runs returned rougher than programmed, in program
   // order (see RougherRun).
   std::vector<RougherRun> runs_rougher;
+  // The smoothed path against the surface's own flank path (FlankRoughness);
+  // over pieces of several cutters, the piece with the largest ratio.
+  FlankRoughness flank_roughness;
   // High accuracy with a surface: solves repeated with the smoothness
   // weights raised because a run came out worse on peak d2 than the input's
   // (each kept only if held to the tolerance).
