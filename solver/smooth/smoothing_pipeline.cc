@@ -473,18 +473,32 @@ Status ChooseStart(const SmoothingRun& run, const ToolPath& stations, const Tool
   return Status::Ok();
 }
 
+// |d2A/ds2| and |d2C/ds2| at each pose of `path` (SecondDerivativePerMm2, 0
+// where it is not taken) into `d2`; false where the path has no joints on
+// the machine.
+bool RotarySecondPerPose(const Machine& machine, const ToolPath& path,
+                         double default_feed_mm_per_min, std::vector<std::array<double, 2>>* d2) {
+  std::vector<JointVector> joints;
+  if (!machine.AssignJoints(path, &joints).ok()) return false;
+  const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
+  d2->resize(path.poses.size());
+  for (size_t i = 0; i < path.poses.size(); ++i) {
+    (*d2)[i] = {SecondDerivativePerMm2(path, joints, m, i, kA),
+                SecondDerivativePerMm2(path, joints, m, i, kC)};
+  }
+  return true;
+}
+
 // The peak |d2A/ds2| or |d2C/ds2|, rad/mm^2, of `path` at its lead poses and
 // the poses next to them.
 double PeakSecondAtLeads(const Machine& machine, const ToolPath& path,
                          const std::vector<bool>& lead, double default_feed_mm_per_min) {
-  std::vector<JointVector> joints;
-  if (!machine.AssignJoints(path, &joints).ok()) return INFINITY;
-  const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
+  std::vector<std::array<double, 2>> d2;
+  if (!RotarySecondPerPose(machine, path, default_feed_mm_per_min, &d2)) return INFINITY;
   double peak = 0.0;
   for (size_t i = 0; i < lead.size(); ++i) {
     const bool near = lead[i] || (i > 0 && lead[i - 1]) || (i + 1 < lead.size() && lead[i + 1]);
-    if (!near) continue;
-    for (int axis : {kA, kC}) peak = std::max(peak, SecondDerivativePerMm2(path, joints, m, i, axis));
+    if (near) peak = std::max({peak, d2[i][0], d2[i][1]});
   }
   return peak;
 }
@@ -695,15 +709,13 @@ FlankRoughness MeasureFlankRoughness(const Machine& machine, const ToolPath& pat
                                      const std::array<double, 2>& flank,
                                      double default_feed_mm_per_min) {
   FlankRoughness roughness;
-  std::vector<JointVector> joints;
-  if (!machine.AssignJoints(path, &joints).ok()) return roughness;
-  const MotionSamples m = ComputeMotionSamples(machine, path, joints, default_feed_mm_per_min);
+  std::vector<std::array<double, 2>> d2;
+  if (!RotarySecondPerPose(machine, path, default_feed_mm_per_min, &d2)) return roughness;
   for (int q = 0; q < 2; ++q) {
     if (!(flank[q] > 0) || !std::isfinite(flank[q])) continue;
     for (size_t i = 0; i < path.poses.size(); ++i) {
-      const double d2 = SecondDerivativePerMm2(path, joints, m, i, q == 0 ? kA : kC);
-      if (!roughness.measured || d2 / flank[q] > roughness.Ratio()) {
-        roughness = {true, q == 0 ? "A" : "C", d2, flank[q], path.poses[i].source_line};
+      if (!roughness.measured || d2[i][q] / flank[q] > roughness.Ratio()) {
+        roughness = {true, q == 0 ? "A" : "C", d2[i][q], flank[q], path.poses[i].source_line};
       }
     }
   }
